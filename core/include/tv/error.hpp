@@ -1,0 +1,25 @@
+#pragma once
+/// Errors at the API boundary: bad user input throws `tv::Error` whose message names the
+/// argument and echoes its value, and the call changes nothing. Programmer errors inside tv
+/// are `assert`s.
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace tv {
+
+class Error : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Shortest text that reads back to the same double ("8.1", "nan", "-inf", "1e+300").
+[[nodiscard]] std::string formatNumber(double v);
+
+/// Each throws `Error` like "tv::World::add: w must be finite and > 0, but was -1".
+void requireFinite(std::string_view where, std::string_view name, double v);
+void requirePositive(std::string_view where, std::string_view name, double v);
+[[noreturn]] void fail(std::string_view where, std::string_view what);
+
+}  // namespace tv

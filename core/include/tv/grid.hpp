@@ -1,0 +1,124 @@
+#pragma once
+/// The spatial hash's cell arithmetic, shared by the world's broad phase, the debugger's cell
+/// overlay and the tests. Cell (cx, cy) covers [cx·size, (cx+1)·size) × [cy·size, (cy+1)·size).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "tv/geometry.hpp"
+
+namespace tv {
+
+struct Cell {
+  std::int64_t x = 0;
+  std::int64_t y = 0;
+  friend constexpr bool operator==(Cell a, Cell b) = default;
+};
+
+/// Inclusive range of cells.
+struct CellRange {
+  std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  [[nodiscard]] constexpr bool empty() const { return x1 < x0 || y1 < y0; }
+  [[nodiscard]] constexpr std::int64_t count() const {
+    return empty() ? 0 : (x1 - x0 + 1) * (y1 - y0 + 1);
+  }
+  [[nodiscard]] constexpr bool contains(Cell c) const {
+    return x0 <= c.x && c.x <= x1 && y0 <= c.y && c.y <= y1;
+  }
+  friend constexpr bool operator==(const CellRange& a, const CellRange& b) = default;
+};
+
+/// Cell coordinates stay well inside int64 and exactly representable in a double.
+inline constexpr double kMaxCellIndex = 4503599627370496.0;  // 2^52
+
+class Grid {
+ public:
+  /// `cellSize` in world units, finite and > 0 (checked by the world).
+  explicit constexpr Grid(double cellSize) : size_(cellSize) {}
+
+  [[nodiscard]] constexpr double cellSize() const { return size_; }
+
+  /// The cell holding coordinate v. Monotone in v, so two closed intervals that meet always
+  /// share a cell, whatever the rounding of v / size.
+  [[nodiscard]] std::int64_t index(double v) const {
+    return static_cast<std::int64_t>(std::floor(v / size_));
+  }
+  [[nodiscard]] Cell cellAt(Vec2 p) const { return {index(p.x), index(p.y)}; }
+  /// World position of a cell's top-left corner.
+  [[nodiscard]] Vec2 origin(Cell c) const {
+    return {static_cast<double>(c.x) * size_, static_cast<double>(c.y) * size_};
+  }
+  [[nodiscard]] Rect bounds(Cell c) const {
+    const Vec2 o = origin(c);
+    return {o.x, o.y, size_, size_};
+  }
+  /// Cells meeting the closed rect.
+  [[nodiscard]] CellRange cellsOf(const Rect& r) const {
+    return {index(r.x), index(r.y), index(r.right()), index(r.bottom())};
+  }
+  /// True when the rect's cell indices fit the hash (|coordinate / cellSize| < 2^52).
+  [[nodiscard]] bool fits(const Rect& r) const {
+    const double lo = std::min(r.x, r.y) / size_;
+    const double hi = std::max(r.right(), r.bottom()) / size_;
+    return std::fabs(lo) < kMaxCellIndex && std::fabs(hi) < kMaxCellIndex;
+  }
+
+  /// Calls f(Cell) for every cell that the rect meets while moving from `start` to `goal`
+  /// (its swept hull), column by column along the dominant axis. The cost follows the cells
+  /// the rect actually crosses, not the area of the move's bounding box. Conservative: a cell
+  /// the hull only nearly meets may be visited too.
+  template <class F>
+  void forEachSweptCell(const Rect& start, Vec2 goal, F&& f) const;
+
+  /// Calls f(Cell) for every cell of the range, row by row.
+  template <class F>
+  static void forEachCell(const CellRange& range, F&& f) {
+    for (std::int64_t cy = range.y0; cy <= range.y1; ++cy)
+      for (std::int64_t cx = range.x0; cx <= range.x1; ++cx) f(Cell{cx, cy});
+  }
+
+ private:
+  double size_;
+};
+
+template <class F>
+void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f) const {
+  const Rect end = start.at(goal);
+  const double dx = goal.x - start.x;
+  const double dy = goal.y - start.y;
+  // Walk along the axis that moves more, in cell units; `u` is that axis, `v` the other.
+  const bool alongX = std::fabs(dx) >= std::fabs(dy);
+  const double u0 = alongX ? start.x : start.y, u1 = alongX ? start.right() : start.bottom();
+  const double e0 = alongX ? end.x : end.y, e1 = alongX ? end.right() : end.bottom();
+  const double v0 = alongX ? start.y : start.x, v1 = alongX ? start.bottom() : start.right();
+  const double w0 = alongX ? end.y : end.x, w1 = alongX ? end.bottom() : end.right();
+  const double du = e0 - u0;
+  const double uMin = std::min(u0, e0), uMax = std::max(u1, e1);
+  const std::int64_t c0 = index(uMin), c1 = index(uMax);
+  for (std::int64_t c = c0; c <= c1; ++c) {
+    // The slice of the column the hull can occupy, then the times the rect spends in it.
+    const double lo = std::max(uMin, static_cast<double>(c) * size_);
+    const double hi = std::min(uMax, static_cast<double>(c + 1) * size_);
+    double t0 = 0.0, t1 = 1.0;
+    if (du != 0.0) {
+      // Rect's u-interval [u0 + t·du, u1 + t·du] meets [lo, hi].
+      const double ta = du > 0 ? (lo - u1) / du : (hi - u0) / du;
+      const double tb = du > 0 ? (hi - u0) / du : (lo - u1) / du;
+      t0 = std::clamp(ta, 0.0, 1.0);
+      t1 = std::clamp(tb, 0.0, 1.0);
+    }
+    double vLo = std::min(v0 + t0 * (w0 - v0), v0 + t1 * (w0 - v0));
+    double vHi = std::max(v1 + t0 * (w1 - v1), v1 + t1 * (w1 - v1));
+    // Rounding in the times above is far below a cell; a margin of a few ulps of the largest
+    // magnitude keeps the walk conservative without an absolute epsilon.
+    const double scale = std::max({std::fabs(vLo), std::fabs(vHi), std::fabs(w0 - v0), size_});
+    const double slack = std::ldexp(1.0, std::ilogb(scale) - 48);
+    vLo = std::max(vLo - slack, std::min(v0, w0));
+    vHi = std::min(vHi + slack, std::max(v1, w1));
+    const std::int64_t r0 = index(vLo), r1 = index(vHi);
+    for (std::int64_t r = r0; r <= r1; ++r) f(alongX ? Cell{c, r} : Cell{r, c});
+  }
+}
+
+}  // namespace tv

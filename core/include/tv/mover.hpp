@@ -1,0 +1,99 @@
+#pragma once
+/// Movers: policies that move an item through the same World, chosen at run time, so that the
+/// debugger and the benchmarks can compare them on the same scene. Each says what it costs and
+/// when it fails.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tv/world.hpp"
+
+namespace tv {
+
+enum class MoverKind : std::uint8_t {
+  /// Teleport to the goal, then push out of every overlap along its shallowest axis — the
+  /// naive mover many games write. Cost: one rect query. Fails: tunnels whenever a step
+  /// carries the mover past an obstacle (step ≥ mover + obstacle thickness), is pushed out of
+  /// the far side when it ends past an obstacle's middle, and catches on tile seams. Kept as
+  /// the negative control.
+  discrete,
+  /// One swept move whose broad phase is the move's whole bounding box, as bump.lua's
+  /// world:move. Never tunnels; candidates grow with the bounding box's area (a long diagonal
+  /// costs far more than the same length along an axis).
+  sweep,
+  /// The move cut into pieces no longer than `maxStep`, each made by the inner mover (discrete
+  /// or sweep) from where the last one ended — the usual patch. With a discrete inner step it
+  /// stops tunnelling only while maxStep < the thinnest obstacle + mover; cost grows with
+  /// speed / maxStep, and the pieces add rounding that a single exact sweep does not have.
+  substep,
+  /// One exact swept move whose broad phase visits only the cells the moving rect crosses:
+  /// cost follows path length, not bounding-box area. Never tunnels; zero error.
+  continuous,
+  /// Integer steps with a sub-pixel remainder, one pixel at a time, each checked for overlap
+  /// (Celeste/TowerFall style). Exact on integer scenes; cost grows linearly with speed (one
+  /// query per pixel), so it is the cost-per-pixel baseline, not a choice for bullets.
+  pixel,
+  /// A short move (below `safetyFraction` of the smallest extent of the mover and the world)
+  /// first asks whether its hull is free — one rect query, as cheap as discrete — and teleports
+  /// if so; anything else, and every long move, goes continuous. Same results as continuous;
+  /// pays for sweeps only where something is near.
+  adaptive,
+};
+
+struct MoverSpec {
+  MoverKind kind = MoverKind::continuous;
+  /// substep: longest piece in world units, finite and >= 0; 0 means half the world's smallest
+  /// item extent (tile / 2 in a tile map, the article's choice).
+  double maxStep = 0.0;
+  /// substep: how each piece moves, `discrete` or `sweep`.
+  MoverKind inner = MoverKind::discrete;
+  /// adaptive: fraction of the smallest extent below which a move tries the cheap path.
+  /// Range (0, 1], default 0.25.
+  double safetyFraction = 0.25;
+
+  /// Stable name: "discrete", "sweep", "substep-discrete", "substep-sweep", "continuous",
+  /// "pixel", "adaptive".
+  [[nodiscard]] std::string name() const;
+};
+
+/// Parses a name from `moverNames()`; throws tv::Error listing the valid names otherwise.
+[[nodiscard]] MoverSpec parseMover(std::string_view name);
+/// Every mover name, in the order of the comparison tables.
+[[nodiscard]] std::span<const std::string_view> moverNames();
+/// One line on what the named mover does and when it fails.
+[[nodiscard]] std::string_view moverDescription(std::string_view name);
+
+class Mover {
+ public:
+  /// Throws tv::Error on a spec out of range (names the field and value).
+  explicit Mover(MoverSpec spec = {});
+
+  [[nodiscard]] const MoverSpec& spec() const { return spec_; }
+
+  /// Moves `id` towards `goal` by this policy. Collisions are valid until the next move by this
+  /// mover or the world. Throws tv::Error on bad input, leaving the world unchanged.
+  MoveResult move(World& world, ItemId id, Vec2 goal, Filter filter = {},
+                  MoveTrace* trace = nullptr);
+
+  /// Forgets per-item state (the pixel mover's remainders), e.g. when a scene restarts.
+  void reset() { remainder_.clear(); }
+
+ private:
+  MoveResult discrete(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace,
+                      std::vector<Collision>& out);
+  MoveResult substep(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
+  MoveResult pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
+  MoveResult adaptive(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
+
+  MoverSpec spec_;
+  std::string name_;
+  std::vector<Collision> collisions_;
+  std::vector<Collision> pieceCollisions_;  // one substep piece's, before they join collisions_
+  std::vector<ItemId> overlapping_;
+  std::vector<Vec2> remainder_;  // pixel: sub-pixel remainder per item slot
+};
+
+}  // namespace tv

@@ -1,0 +1,65 @@
+#pragma once
+/// What one move did, recorded by the move itself so that the debugger draws what the game
+/// got instead of recomputing it. Off unless a MoveTrace is passed; recording never changes
+/// results. When tv is built with TV_TRACE=OFF the pointer is ignored and the recording code
+/// is compiled out.
+
+#include <string_view>
+#include <vector>
+
+#include "tv/geometry.hpp"
+#include "tv/grid.hpp"
+#include "tv/item.hpp"
+#include "tv/response.hpp"
+
+namespace tv {
+
+#ifdef TV_TRACE_DISABLED
+inline constexpr bool kTraceCompiledIn = false;
+#else
+inline constexpr bool kTraceCompiledIn = true;
+#endif
+
+/// One swept leg: the rect at its start and the position it aimed for.
+struct TraceLeg {
+  Rect start;
+  Vec2 goal;
+};
+
+struct MoveTrace {
+  ItemId item;
+  std::string_view mover;          ///< name of the mover that made the move
+  Rect start;                      ///< item before the move
+  Vec2 goal;                       ///< what was asked
+  Vec2 final;                      ///< where it ended
+  std::vector<Cell> cells;         ///< cells the broad phase visited (repeats across legs)
+  std::vector<ItemId> candidates;  ///< items the narrow phase tested
+  std::vector<TraceLeg> legs;      ///< swept legs, in order (responses start new legs)
+  std::vector<Vec2> substeps;      ///< substep boundaries (positions asked for), substep movers
+  std::vector<Collision> hits;     ///< collisions, in the order the responses ran
+
+  void clear() {
+    item = {};
+    mover = {};
+    start = {};
+    goal = final = {};
+    cells.clear();
+    candidates.clear();
+    legs.clear();
+    substeps.clear();
+    hits.clear();
+  }
+};
+
+/// The trace to record into: null when tracing is compiled out, so every recording site folds
+/// away.
+[[nodiscard]] constexpr MoveTrace* activeTrace(MoveTrace* t) {
+  if constexpr (kTraceCompiledIn) {
+    return t;
+  } else {
+    (void)t;
+    return nullptr;
+  }
+}
+
+}  // namespace tv

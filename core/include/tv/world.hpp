@@ -1,0 +1,202 @@
+#pragma once
+/// The swept-AABB world, in the manner of bump.lua: items are rects in a spatial hash; `move`
+/// sweeps an item towards a goal, resolves collisions with responses chosen by a filter, and
+/// reports them.
+///
+/// Guarantees (see geometry.hpp for the tolerance model):
+/// - a move never passes through anything its filter does not ignore or cross, at any speed;
+/// - contact is exact: after touch or slide the item's edge equals the obstacle's edge;
+/// - sliding along floors and walls made of separate tiles never catches on a seam;
+/// - collisions are ordered by ti, then ordinary hits before exact corner hits, then by the
+///   order in which items were added — never by address or hash order;
+/// - the steady-state move path allocates nothing (buffers are kept and reused);
+/// - bad input throws tv::Error naming the value and leaves the world unchanged.
+/// Not thread-safe: queries reuse internal scratch buffers.
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tv/geometry.hpp"
+#include "tv/grid.hpp"
+#include "tv/item.hpp"
+#include "tv/response.hpp"
+#include "tv/sweep.hpp"
+#include "tv/trace.hpp"
+
+namespace tv {
+
+/// Which cells a move's broad phase visits.
+enum class BroadPhase : std::uint8_t {
+  swept,   ///< only the cells the moving rect crosses: cost follows path length
+  bounds,  ///< every cell of the move's bounding box, as bump.lua does
+};
+
+struct MoveOptions {
+  BroadPhase broad = BroadPhase::swept;
+  MoveTrace* trace = nullptr;  ///< optional record of what the move did
+  /// Responses per move before the item stops where it is (acute pockets, bounce between
+  /// walls closer than the move). Range [1, 4096].
+  int maxResponses = 64;
+};
+
+struct MoveResult {
+  Vec2 position;  ///< where the item ends (its goal if nothing was hit)
+  /// Collisions in the order the responses ran; valid until the next call on the world.
+  std::span<const Collision> collisions;
+};
+
+/// An item whose open interior meets a query segment, with where the segment enters and exits.
+struct SegmentHit {
+  ItemId item;
+  double t0 = 0.0, t1 = 0.0;  ///< along the segment, 0 at its start and 1 at its end
+  Vec2 entry, exit;
+};
+
+class World {
+ public:
+  /// `cellSize`: side of a spatial-hash cell in world units, finite and > 0. Default 64.
+  /// A size near the typical item or tile size keeps candidates per move low.
+  explicit World(double cellSize = 64.0);
+
+  // -- items ---------------------------------------------------------------------------------
+  /// Adds a rect (finite, w > 0, h > 0) and returns its handle.
+  ItemId add(const Rect& r);
+  void remove(ItemId id);
+  /// Teleports (and may resize) an item; no collision is checked.
+  void update(ItemId id, const Rect& r);
+  void update(ItemId id, Vec2 position);
+  [[nodiscard]] bool has(ItemId id) const;
+  [[nodiscard]] Rect rect(ItemId id) const;
+  [[nodiscard]] std::size_t count() const { return count_; }
+  /// Cells holding at least one item.
+  [[nodiscard]] std::size_t countCells() const { return occupiedCells_; }
+  /// Add order of an item: the stable tie-break among collisions at the same ti.
+  [[nodiscard]] std::uint64_t order(ItemId id) const;
+  /// Smallest width or height among the items (0 when empty); substep movers default to half.
+  [[nodiscard]] double minExtent() const;
+
+  // -- grid ----------------------------------------------------------------------------------
+  [[nodiscard]] const Grid& grid() const { return grid_; }
+  [[nodiscard]] double cellSize() const { return grid_.cellSize(); }
+  [[nodiscard]] Cell toCell(Vec2 p) const { return grid_.cellAt(p); }
+  [[nodiscard]] Vec2 toWorld(Cell c) const { return grid_.origin(c); }
+  /// Items registered in a cell (empty if the cell was never used).
+  [[nodiscard]] std::span<const std::uint32_t> cellItems(Cell c) const;
+  /// Calls f(Cell, std::size_t itemCount) for every occupied cell, in a stable order.
+  template <class F>
+  void forEachOccupiedCell(F&& f) const {
+    for (std::size_t i = 0; i < cellKeys_.size(); ++i)
+      if (!cellItems_[i].empty()) f(cellKeys_[i], cellItems_[i].size());
+  }
+  /// Calls f(ItemId, const Rect&) for every item, in slot order.
+  template <class F>
+  void forEachItem(F&& f) const {
+    for (std::uint32_t i = 0; i < slots_.size(); ++i)
+      if (slots_[i].alive) f(ItemId{i, slots_[i].generation}, slots_[i].rect);
+  }
+  /// Handle of the live item stored in a slot (as listed by cellItems).
+  [[nodiscard]] ItemId idAt(std::uint32_t slot) const { return {slot, slots_.at(slot).generation}; }
+
+  // -- moving --------------------------------------------------------------------------------
+  /// What `move` would do, without doing it.
+  [[nodiscard]] MoveResult check(ItemId id, Vec2 goal, Filter filter = {},
+                                 const MoveOptions& options = {}) const;
+  /// Sweeps the item towards `goal`, applies responses, and leaves it where it ended.
+  MoveResult move(ItemId id, Vec2 goal, Filter filter = {}, const MoveOptions& options = {});
+  /// `check` for a rect that is not in the world (collisions carry an invalid `item`).
+  [[nodiscard]] MoveResult project(const Rect& r, Vec2 goal, Filter filter = {},
+                                   const MoveOptions& options = {}) const;
+
+  // -- responses -----------------------------------------------------------------------------
+  /// Registers a response that filters can then return. Names must be unique and non-empty.
+  ResponseId addResponse(std::string name, ResponseFn fn);
+  [[nodiscard]] std::string_view responseName(ResponseId id) const;
+  /// Runs the response `c.response` on a collision: the next leg of the move.
+  [[nodiscard]] Leg respond(const Collision& c, Vec2 goal) const;
+  /// The response registered under `name`; throws tv::Error if there is none.
+  [[nodiscard]] ResponseId responseId(std::string_view name) const;
+
+  // -- queries -------------------------------------------------------------------------------
+  /// Items whose interior overlaps `r` (touching is not enough), in add order. `skip` is left
+  /// out (e.g. the item asking).
+  [[nodiscard]] std::vector<ItemId> queryRect(const Rect& r, ItemId skip = {}) const;
+  void queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip = {}) const;
+  /// True when an item other than `skip` overlaps `r` and the filter does not ignore the pair
+  /// (asked as filter(skip, other)). No allocation; the cheap "is this spot free?".
+  [[nodiscard]] bool anyOverlap(const Rect& r, ItemId skip = {}, Filter filter = {}) const;
+  /// Items containing `p` in the half-open sense [x, right) × [y, bottom), in add order.
+  [[nodiscard]] std::vector<ItemId> queryPoint(Vec2 p) const;
+  /// Items whose interior the segment a→b crosses, sorted along it (ties in add order).
+  [[nodiscard]] std::vector<SegmentHit> querySegment(Vec2 a, Vec2 b) const;
+
+  /// Hash of every item (handle, add order, rect bits) and the cell size: two worlds that
+  /// compare equal here behave the same.
+  [[nodiscard]] std::uint64_t stateHash() const;
+
+ private:
+  struct Slot {
+    Rect rect;
+    CellRange cells;
+    std::uint64_t order = 0;
+    std::uint32_t generation = 0;
+    bool alive = false;
+  };
+
+  const Slot& slot(ItemId id, std::string_view where) const;
+  void validateRect(const Rect& r, std::string_view where) const;
+  void validateGoal(const Rect& r, Vec2 goal, std::string_view where) const;
+  void validateOptions(const MoveOptions& o, std::string_view where) const;
+
+  std::uint32_t findCell(Cell c) const;  // kNoCell if absent
+  std::uint32_t cellFor(Cell c);         // creates it
+  void insertCells(std::uint32_t slot, const CellRange& r, const CellRange& skip);
+  void eraseCells(std::uint32_t slot, const CellRange& r, const CellRange& keep);
+  void growHash();
+  void addExtent(const Rect& r);
+  void dropExtent(const Rect& r);
+
+  MoveResult run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
+                 const MoveOptions& o) const;
+  bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
+                MoveTrace* trace, Collision& best) const;
+  template <class F>
+  void forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, BroadPhase broad,
+                        MoveTrace* trace, F&& f) const;
+  std::uint32_t nextEpoch() const;
+
+  static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
+
+  Grid grid_;
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> freeSlots_;
+  std::size_t count_ = 0;
+  std::uint64_t nextOrder_ = 0;
+  std::map<double, std::size_t> extents_;  // min(w, h) -> how many items
+
+  // Spatial hash: open addressing from cell to an index into cellKeys_/cellItems_. Cells are
+  // never freed, so a scene that keeps moving over the same ground stops allocating.
+  std::vector<std::uint32_t> table_;
+  std::vector<Cell> cellKeys_;
+  std::vector<std::vector<std::uint32_t>> cellItems_;
+  std::size_t occupiedCells_ = 0;
+
+  struct NamedResponse {
+    std::string name;
+    ResponseFn fn;
+  };
+  std::vector<NamedResponse> responses_;
+
+  // Scratch reused by every move (hence `mutable`: check and project are logically const).
+  mutable std::vector<std::uint32_t> stamp_;
+  mutable std::uint32_t epoch_ = 0;
+  mutable std::vector<Collision> collisions_;
+  mutable std::vector<std::uint32_t> excluded_;
+  mutable std::vector<std::uint32_t> queryScratch_;
+};
+
+}  // namespace tv

@@ -1,0 +1,48 @@
+#include "tv/geometry.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+
+namespace tv {
+
+Rect unite(const Rect& a, const Rect& b) {
+  const double x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+  const double x1 = std::max(a.right(), b.right()), y1 = std::max(a.bottom(), b.bottom());
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+namespace {
+
+// Doubles mapped to unsigned integers in the same order, so "the next double" is "+1".
+constexpr std::uint64_t kSign = 0x8000000000000000ull;
+std::uint64_t orderedKey(double d) {
+  const auto u = std::bit_cast<std::uint64_t>(d);
+  return (u & kSign) ? ~u : (u | kSign);
+}
+double fromKey(std::uint64_t k) { return std::bit_cast<double>((k & kSign) ? (k & ~kSign) : ~k); }
+
+}  // namespace
+
+double placeBefore(double edge, double size) {
+  // edge - size is within a rounding of the answer, but when the coordinate's ulp is much
+  // finer than the edge's, thousands of coordinates round to the same far edge: gallop to a
+  // bracket, then bisect, instead of stepping one ulp at a time.
+  const auto fits = [&](std::uint64_t k) { return fromKey(k) + size <= edge; };
+  std::uint64_t lo = orderedKey(edge - size), hi = lo;
+  std::uint64_t step = 1;
+  if (fits(lo)) {
+    for (int i = 0; i < 64 && fits(lo + step); ++i, step *= 2) lo += step;
+    hi = lo + step;
+  } else {
+    for (int i = 0; i < 64 && !fits(hi - step); ++i, step *= 2) hi -= step;
+    lo = hi - step;
+  }
+  while (hi - lo > 1) {
+    const std::uint64_t mid = lo + (hi - lo) / 2;
+    (fits(mid) ? lo : hi) = mid;
+  }
+  return fromKey(lo);
+}
+
+}  // namespace tv

@@ -1,0 +1,296 @@
+#include "tv/mover.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "tv/error.hpp"
+
+namespace tv {
+
+namespace {
+
+constexpr std::array<std::string_view, 7> kNames = {
+    "discrete", "sweep", "substep-discrete", "substep-sweep", "continuous", "pixel", "adaptive"};
+
+constexpr std::array<std::string_view, 7> kDescriptions = {
+    "teleport to the goal, push out of overlaps: the naive mover, tunnels at speed",
+    "one swept move over the move's bounding box (bump.lua's world:move)",
+    "pieces of at most maxStep (tile/2), each teleported and pushed out: the usual patch",
+    "pieces of at most maxStep (tile/2), each swept: the patch over bump.lua",
+    "one exact sweep visiting only the cells the rect crosses: never tunnels, zero error",
+    "one pixel at a time with a sub-pixel remainder (Celeste style): cost grows with speed",
+    "free short moves teleport after one hull query; everything else goes continuous",
+};
+
+constexpr std::string_view kWhere = "tv::Mover";
+
+// How many pieces a substep move needs, and guards against a piece count that cannot end.
+constexpr double kMaxPieces = 1 << 24;
+
+}  // namespace
+
+std::string MoverSpec::name() const {
+  switch (kind) {
+    case MoverKind::discrete: return "discrete";
+    case MoverKind::sweep: return "sweep";
+    case MoverKind::substep:
+      return inner == MoverKind::sweep ? "substep-sweep" : "substep-discrete";
+    case MoverKind::continuous: return "continuous";
+    case MoverKind::pixel: return "pixel";
+    case MoverKind::adaptive: return "adaptive";
+  }
+  return "?";
+}
+
+MoverSpec parseMover(std::string_view name) {
+  MoverSpec s;
+  if (name == "discrete") {
+    s.kind = MoverKind::discrete;
+  } else if (name == "sweep") {
+    s.kind = MoverKind::sweep;
+  } else if (name == "substep-discrete" || name == "substep") {
+    s.kind = MoverKind::substep;
+    s.inner = MoverKind::discrete;
+  } else if (name == "substep-sweep") {
+    s.kind = MoverKind::substep;
+    s.inner = MoverKind::sweep;
+  } else if (name == "continuous") {
+    s.kind = MoverKind::continuous;
+  } else if (name == "pixel") {
+    s.kind = MoverKind::pixel;
+  } else if (name == "adaptive") {
+    s.kind = MoverKind::adaptive;
+  } else {
+    std::string list;
+    for (const auto n : kNames) list += (list.empty() ? "" : ", ") + std::string(n);
+    fail("tv::parseMover", "unknown mover '" + std::string(name) + "' (known: " + list + ")");
+  }
+  return s;
+}
+
+std::span<const std::string_view> moverNames() { return kNames; }
+
+std::string_view moverDescription(std::string_view name) {
+  for (std::size_t i = 0; i < kNames.size(); ++i) {
+    if (kNames[i] == name) return kDescriptions[i];
+  }
+  (void)parseMover(name);  // throws with the list of names
+  return {};
+}
+
+Mover::Mover(MoverSpec spec) : spec_(spec), name_(spec.name()) {
+  requireFinite(kWhere, "maxStep", spec.maxStep);
+  if (spec.maxStep < 0) fail(kWhere, "maxStep must be >= 0, but was " + formatNumber(spec.maxStep));
+  if (spec.kind == MoverKind::substep && spec.inner != MoverKind::discrete &&
+      spec.inner != MoverKind::sweep) {
+    fail(kWhere, "a substep mover's inner mover must be discrete or sweep");
+  }
+  if (!(spec.safetyFraction > 0.0 && spec.safetyFraction <= 1.0)) {
+    fail(kWhere, "safetyFraction must be in (0, 1], but was " + formatNumber(spec.safetyFraction));
+  }
+}
+
+MoveResult Mover::move(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
+  trace = activeTrace(trace);
+  if (trace) {
+    trace->clear();
+    trace->mover = name_;
+  }
+  switch (spec_.kind) {
+    case MoverKind::discrete: return discrete(world, id, goal, filter, trace, collisions_);
+    case MoverKind::sweep: return world.move(id, goal, filter, {BroadPhase::bounds, trace});
+    case MoverKind::substep: return substep(world, id, goal, filter, trace);
+    case MoverKind::continuous: return world.move(id, goal, filter, {BroadPhase::swept, trace});
+    case MoverKind::pixel: return pixel(world, id, goal, filter, trace);
+    case MoverKind::adaptive: return adaptive(world, id, goal, filter, trace);
+  }
+  return {};
+}
+
+// Teleport, then push out of each overlap (in add order) along its shallowest axis, as a
+// hand-written mover does. Crossed items are reported but not pushed out of.
+MoveResult Mover::discrete(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace,
+                           std::vector<Collision>& out) {
+  const Rect start = world.rect(id);
+  if (!isFinite(goal)) {
+    requireFinite("tv::Mover::move", "goal.x", goal.x);
+    requireFinite("tv::Mover::move", "goal.y", goal.y);
+  }
+  Rect r = start.at(goal);
+  world.queryRect(r, overlapping_, id);  // validates; throws before anything changes
+  out.clear();
+  if (trace) {
+    trace->item = id;
+    trace->start = start;
+    trace->goal = goal;
+    trace->legs.push_back({start, goal});
+    Grid::forEachCell(world.grid().cellsOf(r), [&](Cell c) { trace->cells.push_back(c); });
+  }
+  for (const ItemId other : overlapping_) {
+    if (trace) trace->candidates.push_back(other);
+    const ResponseId resp = filter(id, other);
+    if (resp == response::ignore) continue;
+    const Rect o = world.rect(other);
+    const Sweep s = sweepRect(r, r.position(), o);
+    if (s.kind != SweepKind::overlap) continue;  // an earlier push already cleared it
+    Collision c;
+    c.item = id;
+    c.other = other;
+    c.overlaps = true;
+    c.ti = s.ti;
+    c.move = goal - start.position();
+    c.normal = s.normal;
+    c.touch = s.touch;
+    c.itemRect = r;
+    c.otherRect = o;
+    c.response = resp;
+    c.target = resp == response::cross ? r.position() : s.touch;
+    if (resp != response::cross) r = r.at(s.touch);
+    out.push_back(c);
+    if (trace) trace->hits.push_back(c);
+  }
+  world.update(id, r);
+  if (trace) trace->final = r.position();
+  return {r.position(), out};
+}
+
+MoveResult Mover::substep(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
+  const Rect start = world.rect(id);
+  requireFinite("tv::Mover::move", "goal.x", goal.x);
+  requireFinite("tv::Mover::move", "goal.y", goal.y);
+  const double maxStep = spec_.maxStep > 0.0 ? spec_.maxStep : 0.5 * world.minExtent();
+  const Vec2 d = goal - start.position();
+  const double len = length(d);
+  const double pieces = len <= maxStep ? 1.0 : std::ceil(len / maxStep);
+  if (!(pieces <= kMaxPieces)) {
+    fail("tv::Mover::move", "substep move of length " + formatNumber(len) + " with maxStep " +
+                                formatNumber(maxStep) + " needs more than 2^24 pieces");
+  }
+  const int n = static_cast<int>(pieces);
+  const Vec2 step = d * (1.0 / pieces);
+  collisions_.clear();
+  MoveTrace* inner = nullptr;  // pieces are recorded into the same trace
+  if (trace) {
+    trace->item = id;
+    trace->start = start;
+    trace->goal = goal;
+    inner = trace;
+  }
+  const BroadPhase broad = BroadPhase::bounds;
+  Vec2 at = start.position();
+  for (int i = 0; i < n; ++i) {
+    const Vec2 target = at + step;
+    if (trace) trace->substeps.push_back(target);
+    MoveResult r;
+    if (spec_.inner == MoverKind::sweep) {
+      // The world's trace setters overwrite start/goal/final: keep ours.
+      r = world.move(id, target, filter, {broad, inner});
+    } else {
+      r = discrete(world, id, target, filter, inner, pieceCollisions_);
+    }
+    collisions_.insert(collisions_.end(), r.collisions.begin(), r.collisions.end());
+    at = r.position;
+  }
+  if (trace) {
+    trace->item = id;
+    trace->start = start;
+    trace->goal = goal;
+    trace->final = at;
+    trace->hits.assign(collisions_.begin(), collisions_.end());
+  }
+  return {at, collisions_};
+}
+
+// Celeste-style: whole pixels, one at a time on x then y, each checked for overlap; what is
+// left below a pixel carries to the next move.
+MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
+  const Rect start = world.rect(id);
+  requireFinite("tv::Mover::move", "goal.x", goal.x);
+  requireFinite("tv::Mover::move", "goal.y", goal.y);
+  if (!world.grid().fits(start.at(goal))) {
+    fail("tv::Mover::move", "goal {" + formatNumber(goal.x) + ", " + formatNumber(goal.y) +
+                                "} is too far from the origin for the world's cell size");
+  }
+  if (remainder_.size() <= id.index) remainder_.resize(id.index + 1);
+  Vec2& rem = remainder_[id.index];
+  collisions_.clear();
+  if (trace) {
+    trace->item = id;
+    trace->start = start;
+    trace->goal = goal;
+    trace->legs.push_back({start, goal});
+  }
+  Rect r = start;
+  const auto blockers = [&](const Rect& probe, Vec2 normal) {
+    bool blocked = false;
+    world.queryRect(probe, overlapping_, id);
+    for (const ItemId other : overlapping_) {
+      if (trace) trace->candidates.push_back(other);
+      const ResponseId resp = filter(id, other);
+      if (resp == response::ignore) continue;
+      Collision c;
+      c.item = id;
+      c.other = other;
+      c.move = goal - start.position();
+      c.normal = normal;
+      c.touch = r.position();
+      c.target = r.position();
+      c.itemRect = r;
+      c.otherRect = world.rect(other);
+      c.response = resp;
+      collisions_.push_back(c);
+      if (trace) trace->hits.push_back(c);
+      if (resp != response::cross) blocked = true;
+    }
+    return blocked;
+  };
+  for (int axis = 0; axis < 2; ++axis) {
+    double& rm = axis == 0 ? rem.x : rem.y;
+    rm += axis == 0 ? goal.x - start.x : goal.y - start.y;
+    double steps = std::round(rm);
+    rm -= steps;
+    const double sign = steps < 0 ? -1.0 : 1.0;
+    const Vec2 unit = axis == 0 ? Vec2{sign, 0} : Vec2{0, sign};
+    for (; steps != 0.0; steps -= sign) {
+      const Rect probe = r.at(r.position() + unit);
+      if (blockers(probe, unit * -1.0)) {
+        rm = 0.0;
+        break;
+      }
+      r = probe;
+    }
+  }
+  world.update(id, r);
+  if (trace) trace->final = r.position();
+  return {r.position(), collisions_};
+}
+
+MoveResult Mover::adaptive(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
+  const Rect start = world.rect(id);
+  requireFinite("tv::Mover::move", "goal.x", goal.x);
+  requireFinite("tv::Mover::move", "goal.y", goal.y);
+  const double dist = std::max(std::fabs(goal.x - start.x), std::fabs(goal.y - start.y));
+  const double extent = std::min({start.w, start.h, world.minExtent()});
+  if (dist < spec_.safetyFraction * extent) {
+    // The swept hull of a move lies inside its bounding box: if nothing there can interact,
+    // the move is free and a teleport is exact.
+    const Rect hull = unite(start, start.at(goal));
+    if (!world.anyOverlap(hull, id, filter)) {
+      world.update(id, start.at(goal));
+      if (trace) {
+        trace->item = id;
+        trace->start = start;
+        trace->goal = goal;
+        trace->final = goal;
+        trace->legs.push_back({start, goal});
+      }
+      collisions_.clear();
+      return {goal, collisions_};
+    }
+  }
+  return world.move(id, goal, filter, {BroadPhase::swept, trace});
+}
+
+}  // namespace tv

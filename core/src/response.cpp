@@ -1,0 +1,27 @@
+#include "tv/response.hpp"
+
+namespace tv {
+
+Leg touchResponse(const Collision& c, Vec2 /*goal*/) { return {c.touch, c.touch}; }
+
+Leg crossResponse(const Collision& c, Vec2 goal) {
+  return {c.itemRect.position(), goal, /*passThrough=*/true};
+}
+
+Leg slideResponse(const Collision& c, Vec2 goal) {
+  // Keep the motion along the surface; the normal's axis stays on the placed edge, so the next
+  // leg runs exactly along it and a neighbouring tile's face is never entered.
+  if (c.normal.x != 0.0) return {c.touch, {c.touch.x, goal.y}};
+  return {c.touch, {goal.x, c.touch.y}};
+}
+
+Leg bounceResponse(const Collision& c, Vec2 goal) {
+  // Reflect only what still points into the obstacle (a leg that started overlapping may
+  // already be leaving it).
+  Vec2 rest = goal - c.touch;
+  if (c.normal.x * rest.x < 0.0) rest.x = -rest.x;
+  if (c.normal.y * rest.y < 0.0) rest.y = -rest.y;
+  return {c.touch, c.touch + rest};
+}
+
+}  // namespace tv

@@ -1,0 +1,39 @@
+#include "tv/timestep.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "tv/error.hpp"
+
+namespace tv {
+
+FixedStep::FixedStep(double step, double maxFrameTime) : step_(step), maxFrameTime_(maxFrameTime) {
+  constexpr std::string_view where = "tv::FixedStep";
+  requirePositive(where, "step", step);
+  requireFinite(where, "maxFrameTime", maxFrameTime);
+  if (maxFrameTime < step) {
+    fail(where, "maxFrameTime must be >= step (" + formatNumber(step) + "), but was " +
+                    formatNumber(maxFrameTime));
+  }
+}
+
+int FixedStep::advance(double frameTime) {
+  constexpr std::string_view where = "tv::FixedStep::advance";
+  requireFinite(where, "frameTime", frameTime);
+  if (frameTime < 0.0) fail(where, "frameTime must be >= 0, but was " + formatNumber(frameTime));
+  ++frames_;
+  if (frameTime > maxFrameTime_) {
+    ++clamped_;
+    frameTime = maxFrameTime_;
+  }
+  accumulator_ += frameTime;
+  int n = 0;
+  while (accumulator_ >= step_) {
+    accumulator_ -= step_;
+    ++n;
+  }
+  ticks_ += static_cast<std::uint64_t>(n);
+  return n;
+}
+
+}  // namespace tv

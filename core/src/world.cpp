@@ -1,0 +1,501 @@
+#include "tv/world.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cassert>
+#include <cstring>
+#include <utility>
+
+#include "tv/error.hpp"
+
+namespace tv {
+
+namespace {
+
+std::uint64_t mix(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+std::uint64_t hashCell(Cell c) {
+  return mix(static_cast<std::uint64_t>(c.x) * 0x9E3779B97F4A7C15ull ^
+             mix(static_cast<std::uint64_t>(c.y)));
+}
+
+std::string describe(const Rect& r) {
+  return "{x=" + formatNumber(r.x) + ", y=" + formatNumber(r.y) + ", w=" + formatNumber(r.w) +
+         ", h=" + formatNumber(r.h) + "}";
+}
+
+std::string describe(ItemId id) {
+  return "{index=" + std::to_string(id.index) + ", generation=" + std::to_string(id.generation) +
+         "}";
+}
+
+constexpr std::string_view kAdd = "tv::World::add";
+constexpr std::string_view kUpdate = "tv::World::update";
+constexpr std::string_view kMove = "tv::World::move";
+
+}  // namespace
+
+World::World(double cellSize) : grid_(1.0) {
+  requirePositive("tv::World", "cellSize", cellSize);
+  grid_ = Grid(cellSize);
+  responses_ = {{"touch", &touchResponse},
+                {"cross", &crossResponse},
+                {"slide", &slideResponse},
+                {"bounce", &bounceResponse}};
+  table_.assign(64, kNoCell);
+}
+
+// [SECTION] validation --------------------------------------------------------------------------
+
+const World::Slot& World::slot(ItemId id, std::string_view where) const {
+  if (!id.valid() || id.index >= slots_.size() || !slots_[id.index].alive ||
+      slots_[id.index].generation != id.generation) {
+    fail(where, "item " + describe(id) + " is not in the world (never added, or removed)");
+  }
+  return slots_[id.index];
+}
+
+void World::validateRect(const Rect& r, std::string_view where) const {
+  requireFinite(where, "x", r.x);
+  requireFinite(where, "y", r.y);
+  requirePositive(where, "w", r.w);
+  requirePositive(where, "h", r.h);
+  if (!std::isfinite(r.right()) || !std::isfinite(r.bottom()) || !grid_.fits(r)) {
+    fail(where, "rect " + describe(r) + " is too far from the origin for cell size " +
+                    formatNumber(grid_.cellSize()));
+  }
+}
+
+void World::validateGoal(const Rect& r, Vec2 goal, std::string_view where) const {
+  requireFinite(where, "goal.x", goal.x);
+  requireFinite(where, "goal.y", goal.y);
+  const Rect g = r.at(goal);
+  if (!std::isfinite(g.right()) || !std::isfinite(g.bottom()) || !grid_.fits(g)) {
+    fail(where, "goal {" + formatNumber(goal.x) + ", " + formatNumber(goal.y) +
+                    "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
+  }
+}
+
+void World::validateOptions(const MoveOptions& o, std::string_view where) const {
+  if (o.maxResponses < 1 || o.maxResponses > 4096) {
+    fail(where, "maxResponses must be in [1, 4096], but was " + std::to_string(o.maxResponses));
+  }
+}
+
+// [SECTION] items -------------------------------------------------------------------------------
+
+ItemId World::add(const Rect& r) {
+  validateRect(r, kAdd);
+  std::uint32_t index;
+  if (!freeSlots_.empty()) {
+    index = freeSlots_.back();
+    freeSlots_.pop_back();
+  } else {
+    index = static_cast<std::uint32_t>(slots_.size());
+    slots_.emplace_back();
+    stamp_.push_back(0);
+  }
+  Slot& s = slots_[index];
+  s.rect = r;
+  s.cells = grid_.cellsOf(r);
+  s.order = nextOrder_++;
+  s.alive = true;
+  insertCells(index, s.cells, CellRange{});
+  addExtent(r);
+  ++count_;
+  return {index, s.generation};
+}
+
+void World::remove(ItemId id) {
+  slot(id, "tv::World::remove");
+  Slot& s = slots_[id.index];
+  eraseCells(id.index, s.cells, CellRange{});
+  dropExtent(s.rect);
+  s.alive = false;
+  ++s.generation;
+  freeSlots_.push_back(id.index);
+  --count_;
+}
+
+void World::update(ItemId id, const Rect& r) {
+  slot(id, kUpdate);
+  validateRect(r, kUpdate);
+  Slot& s = slots_[id.index];
+  const CellRange cells = grid_.cellsOf(r);
+  if (cells != s.cells) {
+    eraseCells(id.index, s.cells, cells);
+    insertCells(id.index, cells, s.cells);
+    s.cells = cells;
+  }
+  if (r.w != s.rect.w || r.h != s.rect.h) {
+    dropExtent(s.rect);
+    addExtent(r);
+  }
+  s.rect = r;
+}
+
+void World::update(ItemId id, Vec2 position) { update(id, slot(id, kUpdate).rect.at(position)); }
+
+bool World::has(ItemId id) const {
+  return id.valid() && id.index < slots_.size() && slots_[id.index].alive &&
+         slots_[id.index].generation == id.generation;
+}
+
+Rect World::rect(ItemId id) const { return slot(id, "tv::World::rect").rect; }
+
+std::uint64_t World::order(ItemId id) const { return slot(id, "tv::World::order").order; }
+
+double World::minExtent() const { return extents_.empty() ? 0.0 : extents_.begin()->first; }
+
+void World::addExtent(const Rect& r) { ++extents_[std::min(r.w, r.h)]; }
+
+void World::dropExtent(const Rect& r) {
+  const auto it = extents_.find(std::min(r.w, r.h));
+  assert(it != extents_.end());
+  if (--it->second == 0) extents_.erase(it);
+}
+
+// [SECTION] spatial hash ------------------------------------------------------------------------
+
+std::uint32_t World::findCell(Cell c) const {
+  const std::size_t mask = table_.size() - 1;
+  for (std::size_t i = hashCell(c) & mask;; i = (i + 1) & mask) {
+    const std::uint32_t k = table_[i];
+    if (k == kNoCell) return kNoCell;
+    if (cellKeys_[k] == c) return k;
+  }
+}
+
+std::uint32_t World::cellFor(Cell c) {
+  const std::uint32_t found = findCell(c);
+  if (found != kNoCell) return found;
+  if ((cellKeys_.size() + 1) * 2 > table_.size()) growHash();
+  const auto k = static_cast<std::uint32_t>(cellKeys_.size());
+  cellKeys_.push_back(c);
+  cellItems_.emplace_back();
+  const std::size_t mask = table_.size() - 1;
+  std::size_t i = hashCell(c) & mask;
+  while (table_[i] != kNoCell) i = (i + 1) & mask;
+  table_[i] = k;
+  return k;
+}
+
+void World::growHash() {
+  std::vector<std::uint32_t> table(table_.size() * 2, kNoCell);
+  const std::size_t mask = table.size() - 1;
+  for (std::uint32_t k = 0; k < cellKeys_.size(); ++k) {
+    std::size_t i = hashCell(cellKeys_[k]) & mask;
+    while (table[i] != kNoCell) i = (i + 1) & mask;
+    table[i] = k;
+  }
+  table_ = std::move(table);
+}
+
+void World::insertCells(std::uint32_t slot, const CellRange& r, const CellRange& skip) {
+  Grid::forEachCell(r, [&](Cell c) {
+    if (skip.contains(c)) return;
+    auto& items = cellItems_[cellFor(c)];
+    if (items.empty()) ++occupiedCells_;
+    items.push_back(slot);
+  });
+}
+
+void World::eraseCells(std::uint32_t slot, const CellRange& r, const CellRange& keep) {
+  Grid::forEachCell(r, [&](Cell c) {
+    if (keep.contains(c)) return;
+    const std::uint32_t k = findCell(c);
+    assert(k != kNoCell);
+    auto& items = cellItems_[k];
+    const auto it = std::find(items.begin(), items.end(), slot);
+    assert(it != items.end());
+    *it = items.back();
+    items.pop_back();
+    if (items.empty()) --occupiedCells_;
+  });
+}
+
+std::span<const std::uint32_t> World::cellItems(Cell c) const {
+  const std::uint32_t k = findCell(c);
+  if (k == kNoCell) return {};
+  return cellItems_[k];
+}
+
+std::uint32_t World::nextEpoch() const {
+  if (++epoch_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0u);
+    epoch_ = 1;
+  }
+  return epoch_;
+}
+
+// [SECTION] moving ------------------------------------------------------------------------------
+
+template <class F>
+void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, BroadPhase broad,
+                             MoveTrace* trace, F&& f) const {
+  const std::uint32_t epoch = nextEpoch();
+  if (self != ItemId::kNone) stamp_[self] = epoch;
+  const auto visit = [&](Cell c) {
+    if (trace) trace->cells.push_back(c);
+    const std::uint32_t k = findCell(c);
+    if (k == kNoCell) return;
+    for (const std::uint32_t other : cellItems_[k]) {
+      if (stamp_[other] == epoch) continue;
+      stamp_[other] = epoch;
+      f(other);
+    }
+  };
+  if (broad == BroadPhase::swept) {
+    grid_.forEachSweptCell(r, goal, visit);
+  } else {
+    Grid::forEachCell(grid_.cellsOf(unite(r, r.at(goal))), visit);
+  }
+}
+
+namespace {
+
+// Collision order: overlaps (deepest first, ti is minus the area), then ti, then ordinary hits
+// before exact corner hits, then add order.
+bool before(const Collision& a, std::uint64_t orderA, const Collision& b, std::uint64_t orderB) {
+  if (a.ti != b.ti) return a.ti < b.ti;
+  if (a.corner != b.corner) return !a.corner;
+  return orderA < orderB;
+}
+
+}  // namespace
+
+bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
+                     BroadPhase broad, MoveTrace* trace, Collision& best) const {
+  const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
+  std::uint64_t bestOrder = 0;
+  bool found = false;
+  forEachCandidate(self, r, goal, broad, trace, [&](std::uint32_t other) {
+    const ItemId otherId{other, slots_[other].generation};
+    if (std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) return;
+    if (trace) trace->candidates.push_back(otherId);
+    const Slot& o = slots_[other];
+    const Sweep s = sweepRect(r, goal, o.rect);
+    if (s.kind == SweepKind::miss) return;
+    Collision c;
+    c.overlaps = s.kind == SweepKind::overlap;
+    c.corner = s.corner;
+    c.ti = s.ti;
+    if (found && !before(c, o.order, best, bestOrder)) return;
+    const ResponseId resp = filter(selfId, otherId);
+    if (resp == response::ignore) return;
+    if (resp >= responses_.size()) {
+      fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
+    }
+    c.item = selfId;
+    c.other = otherId;
+    c.move = goal - r.position();
+    c.normal = s.normal;
+    c.touch = s.touch;
+    c.itemRect = r;
+    c.otherRect = o.rect;
+    c.response = resp;
+    best = c;
+    bestOrder = o.order;
+    found = true;
+  });
+  return found;
+}
+
+MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
+                      const MoveOptions& o) const {
+  MoveTrace* trace = activeTrace(o.trace);
+  collisions_.clear();
+  excluded_.clear();
+  if (trace) {
+    trace->item = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
+    trace->start = r;
+    trace->goal = goal;
+  }
+  Vec2 start = r.position();
+  for (int i = 0;; ++i) {
+    if (i == o.maxResponses) {
+      goal = start;  // out of responses: stay at the last contact, which is outside everything
+      break;
+    }
+    if (trace) trace->legs.push_back({r.at(start), goal});
+    Collision c;
+    if (!firstHit(self, r.at(start), goal, filter, o.broad, trace, c)) break;
+    const Leg next = respond(c, goal);
+    c.target = next.goal;
+    collisions_.push_back(c);
+    if (trace) trace->hits.push_back(c);
+    if (next.passThrough) excluded_.push_back(c.other.index);
+    start = next.start;
+    goal = next.goal;
+  }
+  if (trace) trace->final = goal;
+  return {goal, collisions_};
+}
+
+MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& options) const {
+  const Slot& s = slot(id, "tv::World::check");
+  validateGoal(s.rect, goal, "tv::World::check");
+  validateOptions(options, "tv::World::check");
+  return run(id.index, s.rect, goal, filter, options);
+}
+
+MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& options) {
+  const Slot& s = slot(id, kMove);
+  validateGoal(s.rect, goal, kMove);
+  validateOptions(options, kMove);
+  const MoveResult result = run(id.index, s.rect, goal, filter, options);
+  update(id, s.rect.at(result.position));
+  return result;
+}
+
+MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
+                          const MoveOptions& options) const {
+  validateRect(r, "tv::World::project");
+  validateGoal(r, goal, "tv::World::project");
+  validateOptions(options, "tv::World::project");
+  return run(ItemId::kNone, r, goal, filter, options);
+}
+
+// [SECTION] responses ---------------------------------------------------------------------------
+
+ResponseId World::addResponse(std::string name, ResponseFn fn) {
+  constexpr std::string_view where = "tv::World::addResponse";
+  if (name.empty()) fail(where, "name must not be empty");
+  if (fn == nullptr) fail(where, "response '" + name + "' has no function");
+  for (const auto& r : responses_) {
+    if (r.name == name) fail(where, "a response named '" + name + "' is already registered");
+  }
+  if (responses_.size() >= response::ignore) fail(where, "too many responses");
+  responses_.push_back({std::move(name), fn});
+  return static_cast<ResponseId>(responses_.size() - 1);
+}
+
+std::string_view World::responseName(ResponseId id) const {
+  if (id == response::ignore) return "ignore";
+  if (id >= responses_.size()) {
+    fail("tv::World::responseName", "response " + std::to_string(id) + " is not registered");
+  }
+  return responses_[id].name;
+}
+
+Leg World::respond(const Collision& c, Vec2 goal) const {
+  if (c.response >= responses_.size()) {
+    fail("tv::World::respond", "response " + std::to_string(c.response) + " is not registered");
+  }
+  return responses_[c.response].fn(c, goal);
+}
+
+ResponseId World::responseId(std::string_view name) const {
+  for (std::size_t i = 0; i < responses_.size(); ++i) {
+    if (responses_[i].name == name) return static_cast<ResponseId>(i);
+  }
+  if (name == "ignore") return response::ignore;
+  fail("tv::World::responseId", "no response is named '" + std::string(name) + "'");
+}
+
+// [SECTION] queries -----------------------------------------------------------------------------
+
+void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) const {
+  constexpr std::string_view where = "tv::World::queryRect";
+  requireFinite(where, "x", r.x);
+  requireFinite(where, "y", r.y);
+  requireFinite(where, "w", r.w);
+  requireFinite(where, "h", r.h);
+  if (r.w < 0 || r.h < 0) {
+    fail(where, "w and h must be >= 0, but the rect was " + describe(r));
+  }
+  if (!grid_.fits(r)) fail(where, "rect " + describe(r) + " is too far from the origin");
+  out.clear();
+  queryScratch_.clear();
+  const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
+  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr, [&](std::uint32_t other) {
+    if (overlaps(r, slots_[other].rect)) queryScratch_.push_back(other);
+  });
+  std::sort(queryScratch_.begin(), queryScratch_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return slots_[a].order < slots_[b].order;
+  });
+  for (const std::uint32_t k : queryScratch_) out.push_back({k, slots_[k].generation});
+}
+
+std::vector<ItemId> World::queryRect(const Rect& r, ItemId skip) const {
+  std::vector<ItemId> out;
+  queryRect(r, out, skip);
+  return out;
+}
+
+bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
+  if (!isFinite(r) || !grid_.fits(r)) {
+    fail("tv::World::anyOverlap", "rect " + describe(r) + " is not finite or too far out");
+  }
+  const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
+  bool any = false;
+  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr, [&](std::uint32_t other) {
+    if (any || !overlaps(r, slots_[other].rect)) return;
+    any = filter(skip, ItemId{other, slots_[other].generation}) != response::ignore;
+  });
+  return any;
+}
+
+std::vector<ItemId> World::queryPoint(Vec2 p) const {
+  constexpr std::string_view where = "tv::World::queryPoint";
+  requireFinite(where, "x", p.x);
+  requireFinite(where, "y", p.y);
+  if (!grid_.fits({p.x, p.y, 0, 0})) fail(where, "point is too far from the origin");
+  queryScratch_.clear();
+  for (const std::uint32_t k : cellItems(grid_.cellAt(p))) {
+    if (contains(slots_[k].rect, p)) queryScratch_.push_back(k);
+  }
+  std::sort(queryScratch_.begin(), queryScratch_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return slots_[a].order < slots_[b].order;
+  });
+  std::vector<ItemId> out;
+  for (const std::uint32_t k : queryScratch_) out.push_back({k, slots_[k].generation});
+  return out;
+}
+
+std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
+  constexpr std::string_view where = "tv::World::querySegment";
+  requireFinite(where, "a.x", a.x);
+  requireFinite(where, "a.y", a.y);
+  requireFinite(where, "b.x", b.x);
+  requireFinite(where, "b.y", b.y);
+  const Rect p{a.x, a.y, 0.0, 0.0};
+  if (!grid_.fits(p) || !grid_.fits(p.at(b))) fail(where, "segment is too far from the origin");
+  std::vector<SegmentHit> out;
+  forEachCandidate(ItemId::kNone, p, b, BroadPhase::swept, nullptr, [&](std::uint32_t other) {
+    const SegmentClip c = clipSegment(a, b, slots_[other].rect);
+    if (!c.hit) return;
+    out.push_back({{other, slots_[other].generation}, c.t0, c.t1, a + (b - a) * c.t0,
+                   a + (b - a) * c.t1});
+  });
+  std::sort(out.begin(), out.end(), [&](const SegmentHit& x, const SegmentHit& y) {
+    if (x.t0 != y.t0) return x.t0 < y.t0;
+    return slots_[x.item.index].order < slots_[y.item.index].order;
+  });
+  return out;
+}
+
+// [SECTION] state -------------------------------------------------------------------------------
+
+std::uint64_t World::stateHash() const {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  const auto feed = [&h](std::uint64_t v) { h = mix(h ^ v) + 0x9E3779B97F4A7C15ull; };
+  feed(std::bit_cast<std::uint64_t>(grid_.cellSize()));
+  feed(count_);
+  feed(responses_.size());
+  forEachItem([&](ItemId id, const Rect& r) {
+    feed((std::uint64_t{id.generation} << 32) | id.index);
+    feed(slots_[id.index].order);
+    feed(std::bit_cast<std::uint64_t>(r.x));
+    feed(std::bit_cast<std::uint64_t>(r.y));
+    feed(std::bit_cast<std::uint64_t>(r.w));
+    feed(std::bit_cast<std::uint64_t>(r.h));
+  });
+  return h;
+}
+
+}  // namespace tv
