@@ -25,24 +25,37 @@ double fromKey(std::uint64_t k) { return std::bit_cast<double>((k & kSign) ? (k 
 }  // namespace
 
 double placeBefore(double edge, double size) {
-  // edge - size is within a rounding of the answer, but when the coordinate's ulp is much
-  // finer than the edge's, thousands of coordinates round to the same far edge: gallop to a
-  // bracket, then bisect, instead of stepping one ulp at a time.
-  const auto fits = [&](std::uint64_t k) { return fromKey(k) + size <= edge; };
-  std::uint64_t lo = orderedKey(edge - size), hi = lo;
+  // edge - size is within a rounding of the answer. When it does not land exactly, move the
+  // least distance that does; when the coordinate's ulp is much finer than the edge's,
+  // thousands of coordinates round to the same far edge, so gallop to a bracket and bisect
+  // instead of stepping one ulp at a time.
+  const auto farEdge = [&](std::uint64_t k) { return fromKey(k) + size; };
+  const std::uint64_t k0 = orderedKey(edge - size);
+  const double e0 = farEdge(k0);
+  if (e0 == edge) return fromKey(k0);
+  std::uint64_t lo, hi;  // farEdge(lo) <= edge < ... the bracket's meaning depends on the side
   std::uint64_t step = 1;
-  if (fits(lo)) {
-    for (int i = 0; i < 64 && fits(lo + step); ++i, step *= 2) lo += step;
-    hi = lo + step;
-  } else {
-    for (int i = 0; i < 64 && !fits(hi - step); ++i, step *= 2) hi -= step;
+  if (e0 > edge) {
+    // Largest k below k0 whose far edge does not pass `edge`.
+    hi = k0;
+    for (int i = 0; i < 64 && farEdge(hi - step) > edge; ++i, step *= 2) hi -= step;
     lo = hi - step;
+    while (hi - lo > 1) {
+      const std::uint64_t mid = lo + (hi - lo) / 2;
+      (farEdge(mid) <= edge ? lo : hi) = mid;
+    }
+    return fromKey(lo);
   }
+  // Smallest k above k0 whose far edge reaches `edge`: take it if it lands exactly, otherwise
+  // the one before it, which stays short.
+  lo = k0;
+  for (int i = 0; i < 64 && farEdge(lo + step) < edge; ++i, step *= 2) lo += step;
+  hi = lo + step;
   while (hi - lo > 1) {
     const std::uint64_t mid = lo + (hi - lo) / 2;
-    (fits(mid) ? lo : hi) = mid;
+    (farEdge(mid) < edge ? lo : hi) = mid;
   }
-  return fromKey(lo);
+  return farEdge(hi) == edge ? fromKey(hi) : fromKey(lo);
 }
 
 }  // namespace tv

@@ -19,8 +19,9 @@ std::uint64_t mix(std::uint64_t z) {
 }
 
 std::uint64_t hashCell(Cell c) {
-  return mix(static_cast<std::uint64_t>(c.x) * 0x9E3779B97F4A7C15ull ^
-             mix(static_cast<std::uint64_t>(c.y)));
+  std::uint64_t h = static_cast<std::uint64_t>(c.x) * 0x9E3779B97F4A7C15ull +
+                    static_cast<std::uint64_t>(c.y) * 0xC2B2AE3D27D4EB4Full;
+  return h ^ (h >> 29);
 }
 
 std::string describe(const Rect& r) {
@@ -46,7 +47,7 @@ World::World(double cellSize) : grid_(1.0) {
                 {"cross", &crossResponse},
                 {"slide", &slideResponse},
                 {"bounce", &bounceResponse}};
-  table_.assign(64, kNoCell);
+  table_.assign(64, Bucket{});
 }
 
 // [SECTION] validation --------------------------------------------------------------------------
@@ -104,7 +105,7 @@ ItemId World::add(const Rect& r) {
   s.cells = grid_.cellsOf(r);
   s.order = nextOrder_++;
   s.alive = true;
-  insertCells(index, s.cells, CellRange{});
+  insertCells(index, r, s.cells);
   addExtent(r);
   ++count_;
   return {index, s.generation};
@@ -113,7 +114,7 @@ ItemId World::add(const Rect& r) {
 void World::remove(ItemId id) {
   slot(id, "tv::World::remove");
   Slot& s = slots_[id.index];
-  eraseCells(id.index, s.cells, CellRange{});
+  eraseCells(id.index, s.cells);
   dropExtent(s.rect);
   s.alive = false;
   ++s.generation;
@@ -124,12 +125,25 @@ void World::remove(ItemId id) {
 void World::update(ItemId id, const Rect& r) {
   slot(id, kUpdate);
   validateRect(r, kUpdate);
-  Slot& s = slots_[id.index];
+  place(id.index, r);
+}
+
+void World::place(std::uint32_t index, const Rect& r) {
+  Slot& s = slots_[index];
   const CellRange cells = grid_.cellsOf(r);
   if (cells != s.cells) {
-    eraseCells(id.index, s.cells, cells);
-    insertCells(id.index, cells, s.cells);
+    eraseCells(index, s.cells);
+    insertCells(index, r, cells);
     s.cells = cells;
+  } else {
+    Grid::forEachCell(cells, [&](Cell c) {
+      for (Entry& e : cells_[findCell(c)]) {
+        if (e.slot == index) {
+          e.rect = r;
+          break;
+        }
+      }
+    });
   }
   if (r.w != s.rect.w || r.h != s.rect.h) {
     dropExtent(s.rect);
@@ -164,9 +178,8 @@ void World::dropExtent(const Rect& r) {
 std::uint32_t World::findCell(Cell c) const {
   const std::size_t mask = table_.size() - 1;
   for (std::size_t i = hashCell(c) & mask;; i = (i + 1) & mask) {
-    const std::uint32_t k = table_[i];
-    if (k == kNoCell) return kNoCell;
-    if (cellKeys_[k] == c) return k;
+    const Bucket& b = table_[i];
+    if (b.cell == kNoCell || b.key == c) return b.cell;
   }
 }
 
@@ -176,41 +189,41 @@ std::uint32_t World::cellFor(Cell c) {
   if ((cellKeys_.size() + 1) * 2 > table_.size()) growHash();
   const auto k = static_cast<std::uint32_t>(cellKeys_.size());
   cellKeys_.push_back(c);
-  cellItems_.emplace_back();
+  cells_.emplace_back();
   const std::size_t mask = table_.size() - 1;
   std::size_t i = hashCell(c) & mask;
-  while (table_[i] != kNoCell) i = (i + 1) & mask;
-  table_[i] = k;
+  while (table_[i].cell != kNoCell) i = (i + 1) & mask;
+  table_[i] = {c, k};
   return k;
 }
 
 void World::growHash() {
-  std::vector<std::uint32_t> table(table_.size() * 2, kNoCell);
+  std::vector<Bucket> table(table_.size() * 2);
   const std::size_t mask = table.size() - 1;
   for (std::uint32_t k = 0; k < cellKeys_.size(); ++k) {
     std::size_t i = hashCell(cellKeys_[k]) & mask;
-    while (table[i] != kNoCell) i = (i + 1) & mask;
-    table[i] = k;
+    while (table[i].cell != kNoCell) i = (i + 1) & mask;
+    table[i] = {cellKeys_[k], k};
   }
   table_ = std::move(table);
 }
 
-void World::insertCells(std::uint32_t slot, const CellRange& r, const CellRange& skip) {
+void World::insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r) {
+  const std::uint32_t shared = r.count() > 1 ? 1u : 0u;
   Grid::forEachCell(r, [&](Cell c) {
-    if (skip.contains(c)) return;
-    auto& items = cellItems_[cellFor(c)];
+    auto& items = cells_[cellFor(c)];
     if (items.empty()) ++occupiedCells_;
-    items.push_back(slot);
+    items.push_back({rect, slot, shared});
   });
 }
 
-void World::eraseCells(std::uint32_t slot, const CellRange& r, const CellRange& keep) {
+void World::eraseCells(std::uint32_t slot, const CellRange& r) {
   Grid::forEachCell(r, [&](Cell c) {
-    if (keep.contains(c)) return;
     const std::uint32_t k = findCell(c);
     assert(k != kNoCell);
-    auto& items = cellItems_[k];
-    const auto it = std::find(items.begin(), items.end(), slot);
+    auto& items = cells_[k];
+    const auto it = std::find_if(items.begin(), items.end(),
+                                 [&](const Entry& e) { return e.slot == slot; });
     assert(it != items.end());
     *it = items.back();
     items.pop_back();
@@ -218,10 +231,13 @@ void World::eraseCells(std::uint32_t slot, const CellRange& r, const CellRange& 
   });
 }
 
-std::span<const std::uint32_t> World::cellItems(Cell c) const {
+std::vector<std::uint32_t> World::cellItems(Cell c) const {
+  std::vector<std::uint32_t> out;
   const std::uint32_t k = findCell(c);
-  if (k == kNoCell) return {};
-  return cellItems_[k];
+  if (k != kNoCell) {
+    for (const Entry& e : cells_[k]) out.push_back(e.slot);
+  }
+  return out;
 }
 
 std::uint32_t World::nextEpoch() const {
@@ -243,10 +259,12 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, Broad
     if (trace) trace->cells.push_back(c);
     const std::uint32_t k = findCell(c);
     if (k == kNoCell) return;
-    for (const std::uint32_t other : cellItems_[k]) {
-      if (stamp_[other] == epoch) continue;
-      stamp_[other] = epoch;
-      f(other);
+    for (const Entry& e : cells_[k]) {
+      if (e.shared || e.slot == self) {
+        if (stamp_[e.slot] == epoch) continue;
+        stamp_[e.slot] = epoch;
+      }
+      f(e.slot, e.rect);
     }
   };
   if (broad == BroadPhase::swept) {
@@ -273,13 +291,19 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
   const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
   std::uint64_t bestOrder = 0;
   bool found = false;
-  forEachCandidate(self, r, goal, broad, trace, [&](std::uint32_t other) {
-    const ItemId otherId{other, slots_[other].generation};
-    if (std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) return;
-    if (trace) trace->candidates.push_back(otherId);
-    const Slot& o = slots_[other];
-    const Sweep s = sweepRect(r, goal, o.rect);
+  // Only what meets the move's bounding box can be hit: four compares before the exact test.
+  const Rect hull = unite(r, r.at(goal));
+  forEachCandidate(self, r, goal, broad, trace, [&](std::uint32_t other, const Rect& otherRect) {
+    if (trace) trace->candidates.push_back({other, slots_[other].generation});
+    if (!overlaps(hull, otherRect)) return;
+    if (!excluded_.empty() &&
+        std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) {
+      return;
+    }
+    const Sweep s = sweepRect(r, goal, otherRect);
     if (s.kind == SweepKind::miss) return;
+    const Slot& o = slots_[other];
+    const ItemId otherId{other, o.generation};
     Collision c;
     c.overlaps = s.kind == SweepKind::overlap;
     c.corner = s.corner;
@@ -348,7 +372,7 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
   validateGoal(s.rect, goal, kMove);
   validateOptions(options, kMove);
   const MoveResult result = run(id.index, s.rect, goal, filter, options);
-  update(id, s.rect.at(result.position));
+  place(id.index, s.rect.at(result.position));  // validated with the goal: every leg ends inside
   return result;
 }
 
@@ -412,9 +436,10 @@ void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) cons
   out.clear();
   queryScratch_.clear();
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
-  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr, [&](std::uint32_t other) {
-    if (overlaps(r, slots_[other].rect)) queryScratch_.push_back(other);
-  });
+  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr,
+                   [&](std::uint32_t other, const Rect& rect) {
+                     if (overlaps(r, rect)) queryScratch_.push_back(other);
+                   });
   std::sort(queryScratch_.begin(), queryScratch_.end(), [&](std::uint32_t a, std::uint32_t b) {
     return slots_[a].order < slots_[b].order;
   });
@@ -433,8 +458,9 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
   }
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
   bool any = false;
-  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr, [&](std::uint32_t other) {
-    if (any || !overlaps(r, slots_[other].rect)) return;
+  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr,
+                   [&](std::uint32_t other, const Rect& rect) {
+    if (any || !overlaps(r, rect)) return;
     any = filter(skip, ItemId{other, slots_[other].generation}) != response::ignore;
   });
   return any;
@@ -446,8 +472,11 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
   requireFinite(where, "y", p.y);
   if (!grid_.fits({p.x, p.y, 0, 0})) fail(where, "point is too far from the origin");
   queryScratch_.clear();
-  for (const std::uint32_t k : cellItems(grid_.cellAt(p))) {
-    if (contains(slots_[k].rect, p)) queryScratch_.push_back(k);
+  const std::uint32_t cell = findCell(grid_.cellAt(p));
+  if (cell != kNoCell) {
+    for (const Entry& e : cells_[cell]) {
+      if (contains(e.rect, p)) queryScratch_.push_back(e.slot);
+    }
   }
   std::sort(queryScratch_.begin(), queryScratch_.end(), [&](std::uint32_t a, std::uint32_t b) {
     return slots_[a].order < slots_[b].order;
@@ -466,8 +495,9 @@ std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
   const Rect p{a.x, a.y, 0.0, 0.0};
   if (!grid_.fits(p) || !grid_.fits(p.at(b))) fail(where, "segment is too far from the origin");
   std::vector<SegmentHit> out;
-  forEachCandidate(ItemId::kNone, p, b, BroadPhase::swept, nullptr, [&](std::uint32_t other) {
-    const SegmentClip c = clipSegment(a, b, slots_[other].rect);
+  forEachCandidate(ItemId::kNone, p, b, BroadPhase::swept, nullptr,
+                   [&](std::uint32_t other, const Rect& rect) {
+    const SegmentClip c = clipSegment(a, b, rect);
     if (!c.hit) return;
     out.push_back({{other, slots_[other].generation}, c.t0, c.t1, a + (b - a) * c.t0,
                    a + (b - a) * c.t1});

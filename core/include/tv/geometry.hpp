@@ -70,11 +70,11 @@ struct Rect {
 /// Smallest rect holding both.
 [[nodiscard]] Rect unite(const Rect& a, const Rect& b);
 
-/// The largest coordinate `c` with `c + size <= edge` in double arithmetic: where a mover of
-/// extent `size` must stand so that its far edge rests on `edge`. Equal to `edge` bit for bit
-/// whenever some double achieves that (always, unless the coordinate's magnitude exceeds the
-/// edge's, e.g. a negative position with a positive edge); otherwise short of it by one rounding
-/// step, never past it.
+/// Where a mover of extent `size` must stand so that its far edge rests on `edge`: the
+/// coordinate `c` nearest to edge − size with `c + size == edge` in double arithmetic — bit for
+/// bit — whenever some double achieves that (always, unless the coordinate's magnitude exceeds
+/// the edge's, e.g. a negative position with a positive edge); otherwise the nearest with
+/// `c + size < edge`, short of the edge by one rounding step, never past it.
 [[nodiscard]] double placeBefore(double edge, double size);
 
 /// True when every field is finite.

@@ -35,14 +35,14 @@ inline constexpr double kMaxCellIndex = 4503599627370496.0;  // 2^52
 class Grid {
  public:
   /// `cellSize` in world units, finite and > 0 (checked by the world).
-  explicit constexpr Grid(double cellSize) : size_(cellSize) {}
+  explicit constexpr Grid(double cellSize) : size_(cellSize), inverse_(1.0 / cellSize) {}
 
   [[nodiscard]] constexpr double cellSize() const { return size_; }
 
   /// The cell holding coordinate v. Monotone in v, so two closed intervals that meet always
-  /// share a cell, whatever the rounding of v / size.
+  /// share a cell, whatever the rounding of v · (1 / size).
   [[nodiscard]] std::int64_t index(double v) const {
-    return static_cast<std::int64_t>(std::floor(v / size_));
+    return static_cast<std::int64_t>(std::floor(v * inverse_));
   }
   [[nodiscard]] Cell cellAt(Vec2 p) const { return {index(p.x), index(p.y)}; }
   /// World position of a cell's top-left corner.
@@ -59,8 +59,8 @@ class Grid {
   }
   /// True when the rect's cell indices fit the hash (|coordinate / cellSize| < 2^52).
   [[nodiscard]] bool fits(const Rect& r) const {
-    const double lo = std::min(r.x, r.y) / size_;
-    const double hi = std::max(r.right(), r.bottom()) / size_;
+    const double lo = std::min(r.x, r.y) * inverse_;
+    const double hi = std::max(r.right(), r.bottom()) * inverse_;
     return std::fabs(lo) < kMaxCellIndex && std::fabs(hi) < kMaxCellIndex;
   }
 
@@ -80,6 +80,7 @@ class Grid {
 
  private:
   double size_;
+  double inverse_;
 };
 
 template <class F>
@@ -113,7 +114,7 @@ void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f) const {
     // Rounding in the times above is far below a cell; a margin of a few ulps of the largest
     // magnitude keeps the walk conservative without an absolute epsilon.
     const double scale = std::max({std::fabs(vLo), std::fabs(vHi), std::fabs(w0 - v0), size_});
-    const double slack = std::ldexp(1.0, std::ilogb(scale) - 48);
+    const double slack = scale * 0x1p-46;
     vLo = std::max(vLo - slack, std::min(v0, w0));
     vHi = std::min(vHi + slack, std::max(v1, w1));
     const std::int64_t r0 = index(vLo), r1 = index(vHi);

@@ -85,13 +85,13 @@ class World {
   [[nodiscard]] double cellSize() const { return grid_.cellSize(); }
   [[nodiscard]] Cell toCell(Vec2 p) const { return grid_.cellAt(p); }
   [[nodiscard]] Vec2 toWorld(Cell c) const { return grid_.origin(c); }
-  /// Items registered in a cell (empty if the cell was never used).
-  [[nodiscard]] std::span<const std::uint32_t> cellItems(Cell c) const;
+  /// Slots of the items registered in a cell (see idAt), empty if the cell was never used.
+  [[nodiscard]] std::vector<std::uint32_t> cellItems(Cell c) const;
   /// Calls f(Cell, std::size_t itemCount) for every occupied cell, in a stable order.
   template <class F>
   void forEachOccupiedCell(F&& f) const {
     for (std::size_t i = 0; i < cellKeys_.size(); ++i)
-      if (!cellItems_[i].empty()) f(cellKeys_[i], cellItems_[i].size());
+      if (!cells_[i].empty()) f(cellKeys_[i], cells_[i].size());
   }
   /// Calls f(ItemId, const Rect&) for every item, in slot order.
   template <class F>
@@ -139,6 +139,8 @@ class World {
   [[nodiscard]] std::uint64_t stateHash() const;
 
  private:
+  static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
+
   struct Slot {
     Rect rect;
     CellRange cells;
@@ -152,10 +154,11 @@ class World {
   void validateGoal(const Rect& r, Vec2 goal, std::string_view where) const;
   void validateOptions(const MoveOptions& o, std::string_view where) const;
 
+  void place(std::uint32_t index, const Rect& r);  // update without validation
   std::uint32_t findCell(Cell c) const;  // kNoCell if absent
   std::uint32_t cellFor(Cell c);         // creates it
-  void insertCells(std::uint32_t slot, const CellRange& r, const CellRange& skip);
-  void eraseCells(std::uint32_t slot, const CellRange& r, const CellRange& keep);
+  void insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r);
+  void eraseCells(std::uint32_t slot, const CellRange& r);
   void growHash();
   void addExtent(const Rect& r);
   void dropExtent(const Rect& r);
@@ -164,12 +167,11 @@ class World {
                  const MoveOptions& o) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
                 MoveTrace* trace, Collision& best) const;
+  /// Calls f(slot, const Rect&) once for each item registered in the cells the move visits.
   template <class F>
   void forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, BroadPhase broad,
                         MoveTrace* trace, F&& f) const;
   std::uint32_t nextEpoch() const;
-
-  static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
 
   Grid grid_;
   std::vector<Slot> slots_;
@@ -178,11 +180,23 @@ class World {
   std::uint64_t nextOrder_ = 0;
   std::map<double, std::size_t> extents_;  // min(w, h) -> how many items
 
-  // Spatial hash: open addressing from cell to an index into cellKeys_/cellItems_. Cells are
-  // never freed, so a scene that keeps moving over the same ground stops allocating.
-  std::vector<std::uint32_t> table_;
+  // Spatial hash: open addressing from cell to an index into cellKeys_/cells_. Cells are never
+  // freed, so a scene that keeps moving over the same ground stops allocating. Each cell keeps
+  // a copy of its items' rects, so the broad phase rejects candidates without touching slots_
+  // (the cache misses that dominate a crowd), and `shared` marks items in more than one cell:
+  // only those need the visit stamp that keeps a candidate from being tested twice.
+  struct Entry {
+    Rect rect;
+    std::uint32_t slot;
+    std::uint32_t shared;
+  };
+  struct Bucket {
+    Cell key;
+    std::uint32_t cell = kNoCell;
+  };
+  std::vector<Bucket> table_;
   std::vector<Cell> cellKeys_;
-  std::vector<std::vector<std::uint32_t>> cellItems_;
+  std::vector<std::vector<Entry>> cells_;
   std::size_t occupiedCells_ = 0;
 
   struct NamedResponse {

@@ -1,0 +1,72 @@
+#pragma once
+/// What a simulation moves: bodies (an item of the world plus a velocity and a little state),
+/// and what it counts. Everything here is plain data, copied into the snapshot ring each tick.
+
+#include <cstdint>
+#include <span>
+
+#include "tv/geometry.hpp"
+#include "tv/item.hpp"
+#include "tv/response.hpp"
+
+namespace tv::sim {
+
+/// What a body is in its scene; the debugger colours by it. Behaviour comes from the scene's
+/// rules, not from the role.
+enum class BodyRole : std::uint8_t { projectile, enemy, ball, walker, player, crowd, block };
+
+/// Collision layers: a body meets what its `mask` shares a bit with (solids are `kLayerSolid`).
+inline constexpr std::uint32_t kLayerSolid = 1u << 0;
+inline constexpr std::uint32_t kLayerProjectile = 1u << 1;
+inline constexpr std::uint32_t kLayerEnemy = 1u << 2;
+inline constexpr std::uint32_t kLayerCrowd = 1u << 3;
+inline constexpr std::uint32_t kLayerPlayer = 1u << 4;
+
+struct Body {
+  ItemId item;                ///< its item in the simulation's world (set when the scene is built)
+  Rect rect;                  ///< where it is (always equal to the world's rect for `item`)
+  Vec2 velocity;              ///< px/s
+  ResponseId response = response::slide;  ///< how it responds to whatever it meets
+  BodyRole role = BodyRole::block;
+  std::uint32_t layer = 0;           ///< what it is (one kLayer* bit)
+  std::uint32_t mask = kLayerSolid;  ///< what it collides with
+  std::uint32_t group = 0;    ///< scene-defined, constant: lane, slot, pair...
+  std::int32_t state = 0;     ///< scene-defined, changes: walk direction, contact flags...
+  bool falls = false;         ///< gravity applies
+  bool active = true;         ///< moves each tick; false once it is done (stopped, resolved)
+};
+
+/// What the scenes count. Each scene documents which counters it uses and what they mean;
+/// `moves` and `collisions` are kept by the simulation for every scene. All are part of the
+/// state hash and of every snapshot.
+struct Counters {
+  std::uint64_t moves = 0;        ///< body moves made (one per active body per tick)
+  std::uint64_t collisions = 0;   ///< collision records those moves reported
+  std::uint64_t hits = 0;         ///< scene: what was supposed to be hit and was
+  std::uint64_t tunnelled = 0;    ///< scene: ended on the far side of what it should have hit
+  std::uint64_t farPushOuts = 0;  ///< of `tunnelled`: the mover saw the obstacle but pushed the
+                                  ///< body out of its far side (the discrete mover's failure)
+  std::uint64_t misses = 0;       ///< scene: crossings or shots that should have met and did not
+  std::uint64_t escapes = 0;      ///< scene: bodies that left the space that encloses them
+  std::uint64_t overlaps = 0;     ///< moves that ended inside a solid the body did not start in
+  std::uint64_t jitter = 0;       ///< ticks a resting body moved although nothing pushed it free
+  std::uint64_t snags = 0;        ///< horizontal hits on a floor's seams while walking along it
+  std::uint64_t jumps = 0;        ///< platformer: jumps taken
+  std::uint64_t landings = 0;     ///< platformer: landings after a jump or fall
+  std::uint64_t respawns = 0;     ///< platformer: falls out of the level
+
+  friend bool operator==(const Counters&, const Counters&) = default;
+};
+
+/// The velocity after one collision, by the collision's response (all in px/s):
+/// - touch stops the body: zero velocity;
+/// - slide zeroes the component along the normal, if the velocity points into the obstacle;
+/// - bounce reflects that component, if the velocity points into the obstacle;
+/// - cross and user responses leave the velocity alone.
+/// A component already leaving the obstacle is kept, so a body pushed out of an overlap is not
+/// sent back in.
+[[nodiscard]] Vec2 respondVelocity(Vec2 velocity, const Collision& c);
+/// `respondVelocity` for each collision of a move, in order.
+[[nodiscard]] Vec2 respondVelocity(Vec2 velocity, std::span<const Collision> collisions);
+
+}  // namespace tv::sim

@@ -1,0 +1,187 @@
+#pragma once
+/// Runs one scene with one mover at a fixed step, keeps a ring of per-tick snapshots to step
+/// back through, and hashes its state so determinism is a number a test can compare.
+///
+/// A tick, for each active body in body order (unless the scene is batched):
+///   1. the scene's rules steer (set velocities) — once per tick, before anything moves;
+///   2. gravity: v += g·dt for bodies that fall;
+///   3. the mover moves the body towards position + v·dt, its filter choosing the body's
+///      response for every solid and every body its mask meets (others are ignored);
+///   4. each collision updates the velocity (`respondVelocity`: touch stops, slide zeroes the
+///      normal component, bounce reflects it);
+///   5. the rules look at the move and count.
+/// A batched scene moves all active bodies through one tv::Batch instead (the mover is unused).
+/// Nothing reads a clock: a simulation's state depends only on its scene, parameters, mover and
+/// the number of ticks (and their dt, if `tick(dt)` is used).
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "tv/batch.hpp"
+#include "tv/mover.hpp"
+#include "tv/sim/body.hpp"
+#include "tv/sim/params.hpp"
+#include "tv/sim/scene.hpp"
+#include "tv/timestep.hpp"
+#include "tv/trace.hpp"
+#include "tv/world.hpp"
+
+namespace tv::sim {
+
+struct SimConfig {
+  /// Ticks kept for `stepBack` and `seek`, counting the current one; >= 1. Default 600
+  /// (10 s at 60 Hz). Memory: about 40 bytes per body per tick.
+  std::size_t snapshotCapacity = 600;
+  /// Longest frame `frame()` counts, s (the spiral-of-death guard); raised to dt when dt is
+  /// longer. Finite and > 0. Default 0.25.
+  double maxFrameTime = 0.25;
+};
+
+/// What tracing saw (not part of the state: tracing never changes results).
+struct TraceStats {
+  std::uint64_t moves = 0;       ///< traced moves
+  std::uint64_t candidates = 0;  ///< narrow-phase candidates over those moves
+  std::uint64_t cells = 0;       ///< broad-phase cells over those moves
+};
+
+class Simulation {
+ public:
+  /// Builds `scene` with `params` (which must be the scene's own, e.g. from
+  /// `scene.defaults()`), moved by `mover`. The substep movers' piece length is the scene's
+  /// `substep` parameter, or else the spec's `maxStep`, or else tile / 2. Throws tv::Error on
+  /// bad parameters, a bad mover spec or a bad config.
+  Simulation(const SceneDef& scene, const Params& params, MoverSpec mover = {},
+             SimConfig config = {});
+  /// A built-in scene at its defaults, with a mover by name (see tv::moverNames()).
+  Simulation(std::string_view scene, std::string_view mover);
+
+  /// Rebuilds the scene from tick 0 with new parameters / another mover. On a throw (bad value,
+  /// parameters of another scene) nothing changes: the world, bodies and ring stay as they were.
+  void restart(const Params& params);
+  void restart(const Params& params, MoverSpec mover);
+  /// From tick 0 with the same parameters and mover.
+  void restart();
+
+  // -- stepping ------------------------------------------------------------------------------
+  /// One tick of the scene's dt.
+  void tick();
+  /// One tick of `dt` seconds (finite, > 0): a variable-step game loop, for experiments with
+  /// jittered steps. Snapshots and hashes work as for `tick()`.
+  void tick(double dt);
+  /// Adds one rendered frame (seconds, finite and >= 0) to the fixed-step accumulator and runs
+  /// the ticks it calls for; returns how many. Throws tv::Error on a bad frame time.
+  int frame(double frameTime);
+  /// Ticks until the scene is finished or `maxTicks` more have run; returns how many ran.
+  std::uint64_t run(std::uint64_t maxTicks);
+  /// The scene's rules say nothing more can happen.
+  [[nodiscard]] bool finished() const;
+
+  // -- rendering -----------------------------------------------------------------------------
+  /// Where the last frame falls between the previous tick (0) and the current one (1).
+  [[nodiscard]] double alpha() const { return fixed_.alpha(); }
+  /// Body `i` between its previous and current positions at `alpha()` (after a seek, the
+  /// restored position).
+  [[nodiscard]] Vec2 renderPosition(std::size_t i) const;
+  [[nodiscard]] Rect renderRect(std::size_t i) const;
+  [[nodiscard]] const FixedStep& fixedStep() const { return fixed_; }
+
+  // -- time travel ---------------------------------------------------------------------------
+  /// Restores the previous tick's snapshot. Throws tv::Error when it is not in the ring.
+  void stepBack();
+  /// Restores tick `t` exactly (bodies, world, counters, the mover's own state). A tick in the
+  /// ring is restored directly; a later one is reached by ticking forward from the newest
+  /// snapshot at the scene's dt. Throws tv::Error naming the tick and the ring's range if `t`
+  /// has already left the ring.
+  void seek(std::uint64_t t);
+  [[nodiscard]] bool canStepBack() const { return tick_ > oldest_; }
+  /// The range of ticks the ring holds (newest may be ahead of the current tick after a step
+  /// back; the next tick discards the snapshots ahead).
+  [[nodiscard]] std::uint64_t oldestTick() const { return oldest_; }
+  [[nodiscard]] std::uint64_t newestTick() const { return newest_; }
+
+  // -- state ---------------------------------------------------------------------------------
+  /// Ticks run since tick 0 (the current tick's number).
+  [[nodiscard]] std::uint64_t ticks() const { return tick_; }
+  /// Hash of the tick number, every body's position, velocity, state and activity (as bits),
+  /// and every counter. Deterministic across runs, instances and render rates.
+  [[nodiscard]] std::uint64_t stateHash() const;
+  [[nodiscard]] const Counters& counters() const { return counters_; }
+  [[nodiscard]] std::span<const Body> bodies() const { return bodies_; }
+  [[nodiscard]] std::span<const Solid> solids() const { return solids_; }
+  [[nodiscard]] const World& world() const { return world_; }
+  [[nodiscard]] const SceneDef& scene() const { return scene_; }
+  [[nodiscard]] const Params& params() const { return params_; }
+  /// The mover's spec as used (maxStep resolved).
+  [[nodiscard]] const MoverSpec& moverSpec() const { return mover_.spec(); }
+  [[nodiscard]] Vec2 gravity() const { return gravity_; }
+  /// The scene's fixed step, s.
+  [[nodiscard]] double dt() const { return dt_; }
+  [[nodiscard]] Rect camera() const { return scene_.camera(params_); }
+
+  // -- tracing -------------------------------------------------------------------------------
+  /// Records a MoveTrace of body `i`'s move every tick (nullopt: off, the default). Tracing
+  /// never changes results; batched scenes record nothing (tv::Batch has no trace).
+  void traceBody(std::optional<std::size_t> i);
+  [[nodiscard]] std::optional<std::size_t> tracedBody() const { return traced_; }
+  /// The traced body's move in the last tick, or null (off, inactive, batched, after a seek).
+  [[nodiscard]] const MoveTrace* lastTrace() const { return traceValid_ ? &trace_ : nullptr; }
+  [[nodiscard]] const TraceStats& traceStats() const { return traceStats_; }
+
+ private:
+  struct BodyState {
+    Vec2 position;
+    Vec2 velocity;
+    std::int32_t state = 0;
+    bool active = true;
+  };
+  struct Snapshot {
+    std::vector<BodyState> bodies;
+    Counters counters;
+    bool hasMover = false;
+    Mover mover;  // only movers with per-item state (pixel); others keep none between moves
+  };
+
+  void build(SceneSetup setup);
+  void step(double dt);
+  void moveOneByOne(TickContext& ctx, double dt);
+  void moveBatched(TickContext& ctx, double dt);
+  void record();
+  void restore(std::uint64_t t);
+  [[nodiscard]] TickContext context(double dt);
+
+  SceneDef scene_;
+  Params params_;
+  SimConfig config_;
+  double dt_ = 1.0 / 60.0;
+  World world_;
+  Mover mover_;
+  Batch batch_;
+  FixedStep fixed_;
+
+  std::vector<Solid> solids_;
+  std::vector<Body> bodies_;
+  Vec2 gravity_;
+  std::shared_ptr<const SceneRules> rules_;
+  std::vector<std::int32_t> bodyBySlot_;
+  std::vector<std::uint8_t> tagBySlot_;
+
+  Counters counters_;
+  std::uint64_t tick_ = 0;
+  std::vector<Vec2> previous_;
+
+  std::vector<Snapshot> ring_;
+  std::uint64_t oldest_ = 0, newest_ = 0;
+
+  std::optional<std::size_t> traced_;
+  MoveTrace trace_;
+  bool traceValid_ = false;
+  TraceStats traceStats_;
+
+  std::vector<BatchMove> batchMoves_;
+  std::vector<std::size_t> batchBodies_;
+};
+
+}  // namespace tv::sim

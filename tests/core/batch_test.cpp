@@ -1,0 +1,98 @@
+// Moving versus moving: items that cross during a tick must meet.
+#include <gtest/gtest.h>
+
+#include "tv/batch.hpp"
+#include "tv/error.hpp"
+
+namespace tv {
+namespace {
+
+// A bullet flies right along y = 0..4 while an enemy drops through its path during the tick:
+//
+//            enemy (18..22) falls from y = -20 to y = 20
+//              ##
+//              ##
+//   [bullet] -------------------->   x: 0 -> 40
+//              ||
+//              vv
+//
+// Halfway through the tick both are at x ~ 18..22, y ~ 0..4. Frozen one at a time, neither is
+// ever where the other is.
+struct Crossing {
+  World world{32};
+  ItemId bullet = world.add({0, 0, 4, 4});
+  ItemId enemy = world.add({18, -20, 4, 4});
+};
+
+TEST(Batch, MoversThatCrossDuringATickCollide) {
+  Crossing s;
+  Batch batch;
+  const BatchMove moves[] = {{s.bullet, {40, 0}}, {s.enemy, {18, 20}}};
+  batch.step(s.world, moves, [](ItemId, ItemId) { return response::touch; });
+  ASSERT_EQ(batch.size(), 2u);
+  ASSERT_EQ(batch.outcome(0).collisions.size(), 1u);
+  ASSERT_EQ(batch.outcome(1).collisions.size(), 1u);
+  const Collision& hit = batch.outcome(0).collisions[0];
+  EXPECT_EQ(hit.other, s.enemy);
+  EXPECT_EQ(batch.outcome(1).collisions[0].other, s.bullet);
+  // Both stopped where they met, touching, not overlapping.
+  EXPECT_FALSE(overlaps(s.world.rect(s.bullet), s.world.rect(s.enemy)));
+  EXPECT_TRUE(touches(s.world.rect(s.bullet), s.world.rect(s.enemy)));
+  EXPECT_LT(s.world.rect(s.bullet).x, 40.0);
+}
+
+TEST(Batch, OneAtATimeMovesMissTheSameCrossing) {
+  // The negative control for the test above.
+  Crossing s;
+  const auto touch = [](ItemId, ItemId) { return response::touch; };
+  EXPECT_TRUE(s.world.move(s.bullet, {40, 0}, touch).collisions.empty());
+  EXPECT_TRUE(s.world.move(s.enemy, {18, 20}, touch).collisions.empty());
+}
+
+TEST(Batch, StaticObstaclesStopMoversExactlyAsAMoveDoes) {
+  World w(32);
+  w.add({100, -50, 16, 100});
+  const ItemId a = w.add({0, 0, 8, 8});
+  Batch batch;
+  const BatchMove moves[] = {{a, {200, 30}}};
+  batch.step(w, moves);
+  EXPECT_EQ(w.rect(a).right(), 100.0);  // slid down the wall's face
+  EXPECT_EQ(w.rect(a).y, 30.0);
+}
+
+TEST(Batch, HeadOnSlidersEndTouching) {
+  World w(32);
+  const ItemId a = w.add({0, 0, 8, 8});
+  const ItemId b = w.add({30, 0, 8, 8});
+  Batch batch;
+  const BatchMove moves[] = {{a, {30, 0}}, {b, {0, 0}}};
+  batch.step(w, moves);
+  EXPECT_FALSE(overlaps(w.rect(a), w.rect(b)));
+  EXPECT_EQ(w.rect(a).right(), w.rect(b).x);
+}
+
+TEST(Batch, CrossingMoversReportAndPassThrough) {
+  Crossing s;
+  Batch batch;
+  const BatchMove moves[] = {{s.bullet, {40, 0}}, {s.enemy, {18, 20}}};
+  batch.step(s.world, moves, [](ItemId, ItemId) { return response::cross; });
+  EXPECT_EQ(batch.outcome(0).collisions.size(), 1u);
+  EXPECT_EQ(s.world.rect(s.bullet).position(), (Vec2{40, 0}));
+  EXPECT_EQ(s.world.rect(s.enemy).position(), (Vec2{18, 20}));
+}
+
+TEST(Batch, BadInputThrowsAndChangesNothing) {
+  Crossing s;
+  Batch batch;
+  const std::uint64_t before = s.world.stateHash();
+  const BatchMove twice[] = {{s.bullet, {40, 0}}, {s.bullet, {0, 40}}};
+  EXPECT_THROW(batch.step(s.world, twice), Error);
+  const BatchMove nan[] = {{s.bullet, {NAN, 0}}};
+  EXPECT_THROW(batch.step(s.world, nan), Error);
+  const BatchMove unknown[] = {{ItemId{99, 0}, {0, 0}}};
+  EXPECT_THROW(batch.step(s.world, unknown), Error);
+  EXPECT_EQ(s.world.stateHash(), before);
+}
+
+}  // namespace
+}  // namespace tv
