@@ -2,14 +2,27 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 namespace tv {
 
+namespace {
+
+// The extent from `lo` whose far edge lo + extent reaches `hi`: hi - lo rounded can land the far
+// edge an ulp short (a tie rounding to even), and a hull short of its rects misses obstacles.
+double extentReaching(double lo, double hi) {
+  double e = hi - lo;
+  while (lo + e < hi) e = std::nextafter(e, HUGE_VAL);
+  return e;
+}
+
+}  // namespace
+
 Rect unite(const Rect& a, const Rect& b) {
   const double x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
   const double x1 = std::max(a.right(), b.right()), y1 = std::max(a.bottom(), b.bottom());
-  return {x0, y0, x1 - x0, y1 - y0};
+  return {x0, y0, extentReaching(x0, x1), extentReaching(y0, y1)};
 }
 
 namespace {

@@ -213,8 +213,46 @@ void World::insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r
   Grid::forEachCell(r, [&](Cell c) {
     auto& items = cells_[cellFor(c)];
     if (items.empty()) ++occupiedCells_;
+    if (items.size() == items.capacity()) regrowCell(items, std::max<std::size_t>(4, 2 * items.size()));
     items.push_back({rect, slot, shared});
   });
+}
+
+// A cell's entries live in a buffer of a power-of-two capacity. Buffers are traded through
+// spare pools instead of being freed: a cell that grows takes a larger spare and gives back its
+// old one, a cell that empties to half gives its buffer back for a smaller one. So the
+// heap is only touched when more cells are crowded *at once* than ever before, not each time
+// some cell sees its own peak — which in a moving crowd goes on for tens of thousands of ticks.
+// A cell leaves a buffer as soon as its entries fit the next size down, so the buffers of a size
+// in use are the cells crowded to that size right now.
+void World::regrowCell(std::vector<Entry>& items, std::size_t capacity) {
+  const auto pool = static_cast<std::size_t>(std::countr_zero(capacity));
+  reservePools(pool);
+  if (spares_[pool].empty()) {
+    // Out of spares: make half as many again as this size has in circulation, as a vector grows
+    // geometrically, so a new peak must be half as high again before the heap is touched again.
+    const std::size_t extra = std::max<std::size_t>(1, buffers_[pool] / 2);
+    for (std::size_t i = 0; i < extra; ++i) spares_[pool].emplace_back().reserve(capacity);
+    buffers_[pool] += extra;
+  }
+  std::vector<Entry> next = std::move(spares_[pool].back());
+  spares_[pool].pop_back();
+  next.assign(items.begin(), items.end());
+  if (items.capacity() > 0) {
+    const auto old = static_cast<std::size_t>(std::countr_zero(items.capacity()));
+    reservePools(old);
+    items.clear();
+    spares_[old].push_back(std::move(items));
+  }
+  items = std::move(next);
+}
+
+void World::reservePools(std::size_t pool) {
+  // Room for many spares up front, so that trading buffers does not itself allocate.
+  while (spares_.size() <= pool) {
+    spares_.emplace_back().reserve(256);
+    buffers_.push_back(0);
+  }
 }
 
 void World::eraseCells(std::uint32_t slot, const CellRange& r) {
@@ -228,6 +266,11 @@ void World::eraseCells(std::uint32_t slot, const CellRange& r) {
     *it = items.back();
     items.pop_back();
     if (items.empty()) --occupiedCells_;
+    const std::size_t smaller = items.capacity() / 2;
+    if (smaller >= 4 && items.size() <= smaller) {
+      const auto pool = static_cast<std::size_t>(std::countr_zero(smaller));
+      if (pool < spares_.size() && !spares_[pool].empty()) regrowCell(items, smaller);
+    }
   });
 }
 
@@ -470,7 +513,10 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
   constexpr std::string_view where = "tv::World::queryPoint";
   requireFinite(where, "x", p.x);
   requireFinite(where, "y", p.y);
-  if (!grid_.fits({p.x, p.y, 0, 0})) fail(where, "point is too far from the origin");
+  if (!grid_.fits({p.x, p.y, 0, 0})) {
+    fail(where, "point {" + formatNumber(p.x) + ", " + formatNumber(p.y) +
+                    "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
+  }
   queryScratch_.clear();
   const std::uint32_t cell = findCell(grid_.cellAt(p));
   if (cell != kNoCell) {
@@ -493,7 +539,11 @@ std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
   requireFinite(where, "b.x", b.x);
   requireFinite(where, "b.y", b.y);
   const Rect p{a.x, a.y, 0.0, 0.0};
-  if (!grid_.fits(p) || !grid_.fits(p.at(b))) fail(where, "segment is too far from the origin");
+  if (!grid_.fits(p) || !grid_.fits(p.at(b))) {
+    fail(where, "segment {" + formatNumber(a.x) + ", " + formatNumber(a.y) + "} -> {" +
+                    formatNumber(b.x) + ", " + formatNumber(b.y) +
+                    "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
+  }
   std::vector<SegmentHit> out;
   forEachCandidate(ItemId::kNone, p, b, BroadPhase::swept, nullptr,
                    [&](std::uint32_t other, const Rect& rect) {
@@ -517,6 +567,9 @@ std::uint64_t World::stateHash() const {
   feed(std::bit_cast<std::uint64_t>(grid_.cellSize()));
   feed(count_);
   feed(responses_.size());
+  // What the next add returns (slot, generation, add order) is part of how the world behaves.
+  feed(nextOrder_);
+  for (const std::uint32_t k : freeSlots_) feed((std::uint64_t{slots_[k].generation} << 32) | k);
   forEachItem([&](ItemId id, const Rect& r) {
     feed((std::uint64_t{id.generation} << 32) | id.index);
     feed(slots_[id.index].order);

@@ -67,14 +67,17 @@ struct Rect {
   return r.x <= p.x && p.x < r.right() && r.y <= p.y && p.y < r.bottom();
 }
 
-/// Smallest rect holding both.
+/// Smallest rect holding both: its right() and bottom() are never below either rect's, even
+/// when the size rounds.
 [[nodiscard]] Rect unite(const Rect& a, const Rect& b);
 
 /// Where a mover of extent `size` must stand so that its far edge rests on `edge`: the
 /// coordinate `c` nearest to edge − size with `c + size == edge` in double arithmetic — bit for
-/// bit — whenever some double achieves that (always, unless the coordinate's magnitude exceeds
-/// the edge's, e.g. a negative position with a positive edge); otherwise the nearest with
-/// `c + size < edge`, short of the edge by one rounding step, never past it.
+/// bit — whenever some double achieves that; otherwise the nearest with `c + size < edge`,
+/// short of the edge by one rounding step, never past it. Landing always exists on grids of
+/// dyadic sizes (integers, halves, 1/16ths...). It can fail when the coordinate's ulp is coarser
+/// than the edge's (a position near -1e6 against an edge of 1e-3), or when every sum c + size is
+/// a rounding tie and the edge's mantissa is odd (edge 0.9, size 0.2).
 [[nodiscard]] double placeBefore(double edge, double size);
 
 /// True when every field is finite.

@@ -134,8 +134,8 @@ class World {
   /// Items whose interior the segment a→b crosses, sorted along it (ties in add order).
   [[nodiscard]] std::vector<SegmentHit> querySegment(Vec2 a, Vec2 b) const;
 
-  /// Hash of every item (handle, add order, rect bits) and the cell size: two worlds that
-  /// compare equal here behave the same.
+  /// Hash of every item (handle, add order, rect bits), the free slots and next add order (what
+  /// the next add returns), and the cell size: two worlds that compare equal here behave the same.
   [[nodiscard]] std::uint64_t stateHash() const;
 
  private:
@@ -159,6 +159,9 @@ class World {
   std::uint32_t cellFor(Cell c);         // creates it
   void insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r);
   void eraseCells(std::uint32_t slot, const CellRange& r);
+  struct Entry;
+  void regrowCell(std::vector<Entry>& items, std::size_t capacity);
+  void reservePools(std::size_t pool);
   void growHash();
   void addExtent(const Rect& r);
   void dropExtent(const Rect& r);
@@ -197,6 +200,8 @@ class World {
   std::vector<Bucket> table_;
   std::vector<Cell> cellKeys_;
   std::vector<std::vector<Entry>> cells_;
+  std::vector<std::vector<std::vector<Entry>>> spares_;  // [log2 capacity]: buffers to trade
+  std::vector<std::size_t> buffers_;  // [log2 capacity]: buffers made, in cells or spare
   std::size_t occupiedCells_ = 0;
 
   struct NamedResponse {
