@@ -53,7 +53,9 @@ std::size_t Params::indexOf(std::string_view name) const {
   fail(kWhere, "no parameter is named '" + std::string(name) + "'; valid: " + valid);
 }
 
-double Params::get(std::string_view name) const { return values_[indexOf(name)]; }
+double Params::get(std::string_view name) const {
+  return values_[indexOf(name)];
+}
 
 std::int64_t Params::getInt(std::string_view name) const {
   return static_cast<std::int64_t>(values_[indexOf(name)]);

@@ -8,7 +8,7 @@
 
 namespace tv::sim {
 
-// [SECTION] velocity responses -------------------------------------------------------------------
+// [SECTION] velocity responses --------------------------------------------------------------------
 
 Vec2 respondVelocity(Vec2 v, const Collision& c) {
   switch (c.response) {
@@ -36,9 +36,9 @@ Vec2 respondVelocity(Vec2 v, std::span<const Collision> collisions) {
 
 namespace {
 constexpr std::string_view kRegistry = "tv::sim::SceneRegistry";
-constexpr std::string_view kCommon[] = {param::speed,  param::size,   param::tile,
-                                        param::dt,     param::substep, param::offset,
-                                        param::count,  param::seed,   param::cell};
+constexpr std::string_view kCommon[] = {param::speed, param::size,    param::tile,
+                                        param::dt,    param::substep, param::offset,
+                                        param::count, param::seed,    param::cell};
 }  // namespace
 
 void SceneRegistry::add(SceneDef def) {
@@ -51,8 +51,8 @@ void SceneRegistry::add(SceneDef def) {
     const bool found = std::any_of(def.params.begin(), def.params.end(),
                                    [&](const ParamSpec& s) { return s.name == common; });
     if (!found) {
-      fail(kRegistry, "scene '" + def.name + "' lacks the common parameter '" +
-                          std::string(common) + "'");
+      fail(kRegistry,
+           "scene '" + def.name + "' lacks the common parameter '" + std::string(common) + "'");
     }
   }
   (void)def.defaults();  // throws on duplicate names or defaults out of their own range
@@ -92,7 +92,9 @@ const SceneRegistry& builtinScenes() {
   return registry;
 }
 
-const SceneDef& findScene(std::string_view name) { return builtinScenes().find(name); }
+const SceneDef& findScene(std::string_view name) {
+  return builtinScenes().find(name);
+}
 
 // [SECTION] scene kit -----------------------------------------------------------------------------
 
@@ -100,8 +102,14 @@ namespace detail {
 
 ParamSpec realParam(std::string name, std::string unit, std::string description, double value,
                     double min, double max, bool minExclusive) {
-  return {std::move(name), std::move(unit), std::move(description), value, min, max,
-          minExclusive, false};
+  return {std::move(name),
+          std::move(unit),
+          std::move(description),
+          value,
+          min,
+          max,
+          minExclusive,
+          false};
 }
 
 ParamSpec intParam(std::string name, std::string description, double value, double min,
@@ -115,8 +123,8 @@ std::vector<ParamSpec> commonParams(const CommonDefaults& d) {
       realParam(std::string(param::size), "px", d.sizeMeaning, d.size, 0.0, 1e4, true),
       realParam(std::string(param::tile), "px", "side of a solid tile", d.tile, 0.0, 1e4, true),
       realParam(std::string(param::dt), "s", "the fixed physics step", d.dt, 0.0, 1.0, true),
-      realParam(std::string(param::substep), "px",
-                "substep movers' longest piece; 0 = tile / 2", 0.0, 0.0, 1e9, false),
+      realParam(std::string(param::substep), "px", "substep movers' longest piece; 0 = tile / 2",
+                0.0, 0.0, 1e9, false),
       realParam(std::string(param::offset), "px",
                 "added to every coordinate (precision far from the origin)", d.offset, -1e9, 1e9,
                 false),
@@ -129,9 +137,14 @@ std::vector<ParamSpec> commonParams(const CommonDefaults& d) {
 }
 
 Common readCommon(const Params& p) {
-  return {p.get(param::speed),   p.get(param::size),   p.get(param::tile),
-          p.get(param::dt),      p.get(param::substep), p.get(param::offset),
-          p.get(param::cell),    p.getInt(param::count),
+  return {p.get(param::speed),
+          p.get(param::size),
+          p.get(param::tile),
+          p.get(param::dt),
+          p.get(param::substep),
+          p.get(param::offset),
+          p.get(param::cell),
+          p.getInt(param::count),
           static_cast<std::uint64_t>(p.getInt(param::seed))};
 }
 

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tv/error.hpp"
 #include "tv/sim/params.hpp"
 #include "tv/sim/scene.hpp"
 
@@ -27,9 +28,7 @@ class Rng {
   /// Uniform in [0, 1), a multiple of 2^-53.
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
   /// Uniform in [0, 1), a multiple of 2^-bits: exact in sums with dyadic coordinates.
-  double dyadic(int bits) {
-    return std::ldexp(static_cast<double>(next() >> (64 - bits)), -bits);
-  }
+  double dyadic(int bits) { return std::ldexp(static_cast<double>(next() >> (64 - bits)), -bits); }
   /// Uniform in [0, n), n > 0.
   std::uint64_t below(std::uint64_t n) { return next() % n; }
 
@@ -57,8 +56,7 @@ struct CommonDefaults {
 std::vector<ParamSpec> commonParams(const CommonDefaults& d);
 ParamSpec realParam(std::string name, std::string unit, std::string description, double value,
                     double min, double max, bool minExclusive);
-ParamSpec intParam(std::string name, std::string description, double value, double min,
-                   double max);
+ParamSpec intParam(std::string name, std::string description, double value, double min, double max);
 
 /// The common parameters, read once.
 struct Common {

@@ -23,17 +23,17 @@ inline constexpr std::uint32_t kLayerCrowd = 1u << 3;
 inline constexpr std::uint32_t kLayerPlayer = 1u << 4;
 
 struct Body {
-  ItemId item;                ///< its item in the simulation's world (set when the scene is built)
-  Rect rect;                  ///< where it is (always equal to the world's rect for `item`)
-  Vec2 velocity;              ///< px/s
+  ItemId item;    ///< its item in the simulation's world (set when the scene is built)
+  Rect rect;      ///< where it is (always equal to the world's rect for `item`)
+  Vec2 velocity;  ///< px/s
   ResponseId response = response::slide;  ///< how it responds to whatever it meets
   BodyRole role = BodyRole::block;
   std::uint32_t layer = 0;           ///< what it is (one kLayer* bit)
   std::uint32_t mask = kLayerSolid;  ///< what it collides with
-  std::uint32_t group = 0;    ///< scene-defined, constant: lane, slot, pair...
-  std::int32_t state = 0;     ///< scene-defined, changes: walk direction, contact flags...
-  bool falls = false;         ///< gravity applies
-  bool active = true;         ///< moves each tick; false once it is done (stopped, resolved)
+  std::uint32_t group = 0;           ///< scene-defined, constant: lane, slot, pair...
+  std::int32_t state = 0;            ///< scene-defined, changes: walk direction, contact flags...
+  bool falls = false;                ///< gravity applies
+  bool active = true;                ///< moves each tick; false once it is done (stopped, resolved)
 };
 
 /// What the scenes count. Each scene documents which counters it uses and what they mean;

@@ -13,27 +13,29 @@ namespace tv::sim {
 
 /// One parameter: its name, what it means and the values it accepts.
 struct ParamSpec {
-  std::string name;         ///< as used by `Params::set` and by tv-run's `--name value`
-  std::string unit;         ///< "px/s", "px", "s", "" ...
-  std::string description;  ///< one line
-  double value = 0.0;       ///< the default
-  double min = 0.0;         ///< smallest accepted value
-  double max = 0.0;         ///< largest accepted value
+  std::string name;           ///< as used by `Params::set` and by tv-run's `--name value`
+  std::string unit;           ///< "px/s", "px", "s", "" ...
+  std::string description;    ///< one line
+  double value = 0.0;         ///< the default
+  double min = 0.0;           ///< smallest accepted value
+  double max = 0.0;           ///< largest accepted value
   bool minExclusive = false;  ///< when true the value must be > min (e.g. speed > 0)
   bool integer = false;       ///< whole numbers only (counts, seeds, on/off switches)
 };
 
 /// The common parameters every scene has (each scene picks its own defaults and ranges).
 namespace param {
-inline constexpr std::string_view speed = "speed";      ///< px/s: how fast things move
-inline constexpr std::string_view size = "size";        ///< px: side of the moving bodies
-inline constexpr std::string_view tile = "tile";        ///< px: side of a solid tile
-inline constexpr std::string_view dt = "dt";            ///< s: the fixed physics step
-inline constexpr std::string_view substep = "substep";  ///< px: substep movers' longest piece; 0 = tile/2
-inline constexpr std::string_view offset = "offset";    ///< px: added to every coordinate, |offset| <= 1e9
-inline constexpr std::string_view count = "count";      ///< how many bodies (bullets, balls, movers...)
-inline constexpr std::string_view seed = "seed";        ///< seeds the scene's random phases and layouts
-inline constexpr std::string_view cell = "cell";        ///< px: the world's spatial-hash cell size
+inline constexpr std::string_view speed = "speed";  ///< px/s: how fast things move
+inline constexpr std::string_view size = "size";    ///< px: side of the moving bodies
+inline constexpr std::string_view tile = "tile";    ///< px: side of a solid tile
+inline constexpr std::string_view dt = "dt";        ///< s: the fixed physics step
+inline constexpr std::string_view substep =
+    "substep";  ///< px: substep movers' longest piece; 0 = tile/2
+inline constexpr std::string_view offset =
+    "offset";  ///< px: added to every coordinate, |offset| <= 1e9
+inline constexpr std::string_view count = "count";  ///< how many bodies (bullets, balls, movers...)
+inline constexpr std::string_view seed = "seed";    ///< seeds the scene's random phases and layouts
+inline constexpr std::string_view cell = "cell";    ///< px: the world's spatial-hash cell size
 }  // namespace param
 
 /// Values for a list of parameter specs. Setting validates: a bad value throws tv::Error naming

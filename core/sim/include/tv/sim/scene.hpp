@@ -37,10 +37,10 @@ class SceneRules;
 
 /// What building a scene produces.
 struct SceneSetup {
-  double cellSize = 64.0;         ///< the world's spatial-hash cell, px
-  std::vector<Solid> solids;      ///< added to the world first, in this order
-  std::vector<Body> bodies;       ///< then these (their `item` is filled in by the simulation)
-  Vec2 gravity;                   ///< px/s², applied to bodies with `falls`
+  double cellSize = 64.0;     ///< the world's spatial-hash cell, px
+  std::vector<Solid> solids;  ///< added to the world first, in this order
+  std::vector<Body> bodies;   ///< then these (their `item` is filled in by the simulation)
+  Vec2 gravity;               ///< px/s², applied to bodies with `falls`
   std::shared_ptr<const SceneRules> rules;  ///< null: plain movement, nothing counted
 };
 
@@ -49,9 +49,9 @@ struct TickContext {
   std::span<Body> bodies;
   Counters& counters;
   const World& world;
-  std::uint64_t tick = 0;          ///< the tick being run: 0 for the first
-  double dt = 0.0;                 ///< its length, s
-  std::span<const Vec2> previous;  ///< every body's position before this tick
+  std::uint64_t tick = 0;                    ///< the tick being run: 0 for the first
+  double dt = 0.0;                           ///< its length, s
+  std::span<const Vec2> previous;            ///< every body's position before this tick
   std::span<const std::int32_t> bodyBySlot;  ///< world slot -> body index, or -1 for a solid
   std::span<const std::uint8_t> tagBySlot;   ///< world slot -> the solid's tag (0 for bodies)
 
@@ -66,7 +66,9 @@ struct TickContext {
 };
 
 /// A scene's behaviour. Every hook is const: rules read their constant data (wall rects, slot
-/// boxes) from themselves and keep everything that changes in the bodies and counters.
+/// boxes) from themselves and keep everything that changes in the bodies and counters. A hook
+/// may teleport a body (a respawn) by writing its `rect`; the simulation moves the world's item
+/// to match after the hook returns.
 class SceneRules {
  public:
   virtual ~SceneRules() = default;
@@ -86,9 +88,9 @@ class SceneRules {
 
 /// A registered scene.
 struct SceneDef {
-  std::string category;     ///< "Tunnelling", "Resting", "Games"...
-  std::string name;         ///< unique, lower-case-with-dashes
-  std::string description;  ///< one line
+  std::string category;           ///< "Tunnelling", "Resting", "Games"...
+  std::string name;               ///< unique, lower-case-with-dashes
+  std::string description;        ///< one line
   std::vector<ParamSpec> params;  ///< every common parameter (see `param::`) plus its own
   /// The world rect to frame, for given parameters (cheap: does not build the scene).
   std::function<Rect(const Params&)> camera;

@@ -150,11 +150,15 @@ class Simulation {
   void moveBatched(TickContext& ctx, double dt);
   void record();
   void restore(std::uint64_t t);
+  void syncWorld(std::size_t i);
+  void noteTrace();
+  [[nodiscard]] ResponseId respond(ItemId item, ItemId other) const;
   [[nodiscard]] TickContext context(double dt);
 
   SceneDef scene_;
   Params params_;
   SimConfig config_;
+  MoverSpec requested_;  // as given (maxStep unresolved), for restarts with new parameters
   double dt_ = 1.0 / 60.0;
   World world_;
   Mover mover_;

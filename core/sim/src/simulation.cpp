@@ -1,0 +1,369 @@
+// Simulation: building, ticking, the snapshot ring and the state hash.
+//
+// Index: [SECTION] building · [SECTION] ticking · [SECTION] rendering · [SECTION] snapshots ·
+//        [SECTION] hashing · [SECTION] tracing
+#include "tv/sim/simulation.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <string>
+
+#include "tv/error.hpp"
+
+namespace tv::sim {
+
+namespace {
+
+constexpr std::string_view kWhere = "tv::sim::Simulation";
+
+std::uint64_t mix(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+struct Hasher {
+  std::uint64_t h = 0x7476'7369'6D00'0001ull;  // "tvsim"
+  void add(std::uint64_t w) { h = mix(h ^ (w + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2))); }
+  void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
+  void add(Vec2 v) {
+    add(v.x);
+    add(v.y);
+  }
+};
+
+void checkParams(const SceneDef& scene, const Params& params) {
+  const auto specs = params.specs();
+  bool same = specs.size() == scene.params.size();
+  for (std::size_t i = 0; same && i < specs.size(); ++i)
+    same = specs[i].name == scene.params[i].name;
+  if (!same) {
+    fail(kWhere, "the parameters are not those of scene '" + scene.name +
+                     "' (build them with its defaults())");
+  }
+  // Revalidate against the scene's own ranges: a Params object carries its own copy of them.
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    Params::validate(scene.params[i], params.values()[i]);
+}
+
+MoverSpec resolveMover(MoverSpec spec, const Params& params) {
+  (void)Mover(spec);  // a bad spec throws as given, before any default replaces a field
+  if (spec.kind == MoverKind::substep) {
+    const double fromScene = params.get(param::substep);
+    if (fromScene > 0.0) {
+      spec.maxStep = fromScene;
+    } else if (spec.maxStep == 0.0) {
+      spec.maxStep = params.get(param::tile) * 0.5;
+    }
+  }
+  return spec;
+}
+
+}  // namespace
+
+// [SECTION] building ------------------------------------------------------------------------------
+
+Simulation::Simulation(const SceneDef& scene, const Params& params, MoverSpec mover,
+                       SimConfig config)
+    : scene_(scene), params_(params), config_(config), requested_(mover) {
+  checkParams(scene_, params_);
+  if (config_.snapshotCapacity < 1) {
+    fail(kWhere,
+         "snapshotCapacity must be >= 1, but was " + std::to_string(config_.snapshotCapacity));
+  }
+  requirePositive(kWhere, "maxFrameTime", config_.maxFrameTime);
+  dt_ = params_.get(param::dt);
+  mover_ = Mover(resolveMover(mover, params_));
+  fixed_ = FixedStep(dt_, std::max(config_.maxFrameTime, dt_));
+  build(scene_.build(params_));
+}
+
+Simulation::Simulation(std::string_view scene, std::string_view mover)
+    : Simulation(findScene(scene), findScene(scene).defaults(), parseMover(mover)) {}
+
+void Simulation::build(SceneSetup setup) {
+  world_ = World(setup.cellSize);
+  gravity_ = setup.gravity;
+  rules_ = std::move(setup.rules);
+  solids_ = std::move(setup.solids);
+  bodies_ = std::move(setup.bodies);
+  const std::size_t items = solids_.size() + bodies_.size();
+  bodyBySlot_.assign(items, -1);
+  tagBySlot_.assign(items, 0);
+  const auto grow = [&](ItemId id) {
+    if (id.index >= bodyBySlot_.size()) {
+      bodyBySlot_.resize(id.index + 1, -1);
+      tagBySlot_.resize(id.index + 1, 0);
+    }
+  };
+  for (const Solid& s : solids_) {
+    const ItemId id = world_.add(s.rect);
+    grow(id);
+    tagBySlot_[id.index] = s.tag;
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    Body& b = bodies_[i];
+    b.item = world_.add(b.rect);
+    grow(b.item);
+    bodyBySlot_[b.item.index] = static_cast<std::int32_t>(i);
+  }
+  previous_.resize(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
+  counters_ = {};
+  tick_ = 0;
+  ring_.clear();
+  ring_.resize(config_.snapshotCapacity);
+  oldest_ = newest_ = 0;
+  traceValid_ = false;
+  if (traced_ && *traced_ >= bodies_.size()) traced_.reset();
+  record();
+}
+
+void Simulation::restart(const Params& params) {
+  restart(params, requested_);
+}
+
+void Simulation::restart(const Params& params, MoverSpec mover) {
+  Simulation next(scene_, params, mover, config_);  // throws before anything here changes
+  next.traced_ = traced_;
+  if (next.traced_ && *next.traced_ >= next.bodies_.size()) next.traced_.reset();
+  *this = std::move(next);
+}
+
+void Simulation::restart() {
+  restart(params_, requested_);
+}
+
+// [SECTION] ticking -------------------------------------------------------------------------------
+
+void Simulation::tick() {
+  step(dt_);
+}
+
+void Simulation::tick(double dt) {
+  requirePositive("tv::sim::Simulation::tick", "dt", dt);
+  step(dt);
+}
+
+int Simulation::frame(double frameTime) {
+  const int n = fixed_.advance(frameTime);
+  for (int i = 0; i < n; ++i) step(dt_);
+  return n;
+}
+
+std::uint64_t Simulation::run(std::uint64_t maxTicks) {
+  std::uint64_t n = 0;
+  while (n < maxTicks && !finished()) {
+    step(dt_);
+    ++n;
+  }
+  return n;
+}
+
+bool Simulation::finished() const {
+  return rules_ && rules_->finished(bodies_);
+}
+
+TickContext Simulation::context(double dt) {
+  return {bodies_, counters_, world_, tick_, dt, previous_, bodyBySlot_, tagBySlot_};
+}
+
+void Simulation::syncWorld(std::size_t i) {
+  // Rules may teleport a body (a respawn) by writing its rect.
+  const Body& b = bodies_[i];
+  if (world_.rect(b.item) != b.rect) world_.update(b.item, b.rect);
+}
+
+void Simulation::step(double dt) {
+  for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
+  traceValid_ = false;
+  TickContext ctx = context(dt);
+  if (rules_) rules_->control(ctx);
+  if (rules_ && rules_->batched()) {
+    moveBatched(ctx, dt);
+  } else {
+    moveOneByOne(ctx, dt);
+  }
+  if (rules_) {
+    rules_->afterTick(ctx);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) syncWorld(i);
+  }
+  ++tick_;
+  record();
+}
+
+// The filter every move uses: a body meets what its mask shares a bit with, by its response.
+ResponseId Simulation::respond(ItemId item, ItemId other) const {
+  const std::int32_t a = item.index < bodyBySlot_.size() ? bodyBySlot_[item.index] : -1;
+  const std::int32_t o = other.index < bodyBySlot_.size() ? bodyBySlot_[other.index] : -1;
+  if (a < 0) return response::ignore;
+  const Body& body = bodies_[static_cast<std::size_t>(a)];
+  const std::uint32_t layer = o < 0 ? kLayerSolid : bodies_[static_cast<std::size_t>(o)].layer;
+  return (body.mask & layer) != 0 ? body.response : response::ignore;
+}
+
+void Simulation::moveOneByOne(TickContext& ctx, double dt) {
+  const auto filter = [this](ItemId item, ItemId other) { return respond(item, other); };
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    Body& b = bodies_[i];
+    if (!b.active) continue;
+    if (b.falls) b.velocity = b.velocity + gravity_ * dt;
+    const Vec2 goal = b.rect.position() + b.velocity * dt;
+    const bool traced = traced_ && *traced_ == i;
+    if (traced) trace_.clear();
+    const MoveResult r = mover_.move(world_, b.item, goal, filter, traced ? &trace_ : nullptr);
+    b.rect = world_.rect(b.item);
+    b.velocity = respondVelocity(b.velocity, r.collisions);
+    ++counters_.moves;
+    counters_.collisions += r.collisions.size();
+    if (traced) noteTrace();
+    if (rules_) {
+      rules_->afterMove(ctx, i, goal, r.collisions);
+      syncWorld(i);
+    }
+  }
+}
+
+void Simulation::moveBatched(TickContext& ctx, double dt) {
+  const auto filter = [this](ItemId item, ItemId other) { return respond(item, other); };
+  batchMoves_.clear();
+  batchBodies_.clear();
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    Body& b = bodies_[i];
+    if (!b.active) continue;
+    if (b.falls) b.velocity = b.velocity + gravity_ * dt;
+    batchMoves_.push_back({b.item, b.rect.position() + b.velocity * dt});
+    batchBodies_.push_back(i);
+  }
+  batch_.step(world_, batchMoves_, filter);
+  for (std::size_t k = 0; k < batchBodies_.size(); ++k) {
+    const std::size_t i = batchBodies_[k];
+    Body& b = bodies_[i];
+    const BatchOutcome out = batch_.outcome(k);
+    b.rect = world_.rect(b.item);
+    b.velocity = respondVelocity(b.velocity, out.collisions);
+    ++counters_.moves;
+    counters_.collisions += out.collisions.size();
+    if (rules_) {
+      rules_->afterMove(ctx, i, batchMoves_[k].goal, out.collisions);
+      syncWorld(i);
+    }
+  }
+}
+
+// [SECTION] rendering -----------------------------------------------------------------------------
+
+Vec2 Simulation::renderPosition(std::size_t i) const {
+  if (i >= bodies_.size()) {
+    fail("tv::sim::Simulation::renderPosition", "body " + std::to_string(i) +
+                                                    " does not exist (there are " +
+                                                    std::to_string(bodies_.size()) + ")");
+  }
+  return interpolate(previous_[i], bodies_[i].rect.position(), fixed_.alpha());
+}
+
+Rect Simulation::renderRect(std::size_t i) const {
+  return bodies_.at(i).rect.at(renderPosition(i));
+}
+
+// [SECTION] snapshots -----------------------------------------------------------------------------
+
+void Simulation::record() {
+  Snapshot& s = ring_[tick_ % ring_.size()];
+  s.bodies.resize(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const Body& b = bodies_[i];
+    s.bodies[i] = {b.rect.position(), b.velocity, b.state, b.active};
+  }
+  s.counters = counters_;
+  // Only the pixel mover keeps state between moves (its sub-pixel remainders); copying the
+  // others would cost a little every tick and restore nothing.
+  s.hasMover = mover_.spec().kind == MoverKind::pixel;
+  if (s.hasMover) s.mover = mover_;
+  newest_ = tick_;  // anything ahead (after a step back) is now another future
+  if (tick_ - oldest_ >= ring_.size()) oldest_ = tick_ - ring_.size() + 1;
+}
+
+void Simulation::restore(std::uint64_t t) {
+  const Snapshot& s = ring_[t % ring_.size()];
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    Body& b = bodies_[i];
+    const BodyState& st = s.bodies[i];
+    b.rect = b.rect.at(st.position);
+    b.velocity = st.velocity;
+    b.state = st.state;
+    b.active = st.active;
+    syncWorld(i);
+    previous_[i] = st.position;
+  }
+  counters_ = s.counters;
+  if (s.hasMover) mover_ = s.mover;
+  tick_ = t;
+  traceValid_ = false;
+  fixed_ = FixedStep(dt_, fixed_.maxFrameTime());
+}
+
+void Simulation::stepBack() {
+  if (!canStepBack()) {
+    fail("tv::sim::Simulation::stepBack",
+         "tick " + std::to_string(tick_) + " is the oldest in the snapshot ring");
+  }
+  restore(tick_ - 1);
+}
+
+void Simulation::seek(std::uint64_t t) {
+  if (t < oldest_) {
+    fail("tv::sim::Simulation::seek", "tick " + std::to_string(t) +
+                                          " has left the snapshot ring, which holds ticks " +
+                                          std::to_string(oldest_) + ".." + std::to_string(newest_));
+  }
+  if (t <= newest_) {
+    restore(t);
+    return;
+  }
+  if (tick_ != newest_) restore(newest_);
+  while (tick_ < t) step(dt_);
+}
+
+// [SECTION] hashing -------------------------------------------------------------------------------
+
+std::uint64_t Simulation::stateHash() const {
+  Hasher h;
+  h.add(tick_);
+  h.add(static_cast<std::uint64_t>(bodies_.size()));
+  for (const Body& b : bodies_) {
+    h.add(b.rect.position());
+    h.add(b.velocity);
+    h.add(static_cast<std::uint64_t>(static_cast<std::uint32_t>(b.state)) |
+          (b.active ? std::uint64_t{1} << 32 : 0));
+  }
+  const Counters& c = counters_;
+  for (const std::uint64_t v :
+       {c.moves, c.collisions, c.hits, c.tunnelled, c.farPushOuts, c.misses, c.escapes, c.overlaps,
+        c.jitter, c.snags, c.jumps, c.landings, c.respawns}) {
+    h.add(v);
+  }
+  return h.h;
+}
+
+// [SECTION] tracing -------------------------------------------------------------------------------
+
+void Simulation::traceBody(std::optional<std::size_t> i) {
+  if (i && *i >= bodies_.size()) {
+    fail("tv::sim::Simulation::traceBody", "body " + std::to_string(*i) +
+                                               " does not exist (there are " +
+                                               std::to_string(bodies_.size()) + ")");
+  }
+  traced_ = i;
+  traceValid_ = false;
+}
+
+void Simulation::noteTrace() {
+  traceValid_ = true;
+  ++traceStats_.moves;
+  traceStats_.candidates += trace_.candidates.size();
+  traceStats_.cells += trace_.cells.size();
+}
+
+}  // namespace tv::sim
