@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Renders every golden screenshot listed in screenshots/goldens.txt into screenshots/, then
+# rewrites screenshots/README.md from the same list, so the pictures, their captions and the
+# tests (tests/app) never disagree.
+#
+#   app/headless/regenerate_goldens.sh [path/to/tv-render]
+#   cmake --build build/release --target tv-goldens        # the same, through CMake
+#
+# The goldens are pinned to Debian 12's Mesa (llvmpipe): render them there.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+render="${1:-$root/build/release/app/headless/tv-render}"
+list="$root/screenshots/goldens.txt"
+readme="$root/screenshots/README.md"
+
+if [[ ! -x "$render" ]]; then
+  echo "regenerate_goldens.sh: no tv-render at '$render' (build it, or pass its path)" >&2
+  exit 2
+fi
+
+# Same environment as the tests: no shader cache on disk, the default llvmpipe driver.
+export MESA_SHADER_CACHE_DISABLE=true
+unset GALLIUM_DRIVER LIBGL_ALWAYS_SOFTWARE
+
+{
+  echo "# Golden screenshots"
+  echo
+  echo "Rendered by \`tv-render\` (OSMesa, llvmpipe, Debian 12) from the list in"
+  echo "[goldens.txt](goldens.txt); \`app/headless/regenerate_goldens.sh\` (or the CMake target"
+  echo "\`tv-goldens\`) renders them all again and rewrites this page. \`ctest -R golden\` renders"
+  echo "each one and compares it pixel for pixel (see tests/app)."
+  echo
+  echo "Colours: grey solids, teal bodies (dark once stopped), blue cells shaded by item count,"
+  echo "yellow cells the traced move visited, magenta candidates, white sweep, light-blue hull,"
+  echo "violet substeps, red hits (rect at touch, normal, touch point), green response targets,"
+  echo "cyan/orange/yellow the physics, render and floored-pixel positions. The legend in every"
+  echo "picture says the same."
+} > "$readme"
+
+count=0
+while IFS= read -r line; do
+  [[ -z "${line// }" || "$line" == \#* ]] && continue
+  IFS='|' read -r name args caption <<< "$line"
+  name="$(echo "$name" | xargs)"
+  args="$(echo "$args" | xargs)"
+  caption="$(echo "$caption" | sed 's/^ *//; s/ *$//')"
+  # shellcheck disable=SC2086  # the arguments are words by design
+  "$render" $args --out "$root/screenshots/$name.png" > /dev/null
+  {
+    echo
+    echo "## $name"
+    echo
+    echo "![$name]($name.png)"
+    echo
+    echo "$caption"
+    echo
+    echo "\`tv-render $args\`"
+  } >> "$readme"
+  count=$((count + 1))
+done < "$list"
+echo "regenerate_goldens.sh: rendered $count images into screenshots/"

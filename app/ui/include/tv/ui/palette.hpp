@@ -1,0 +1,76 @@
+#pragma once
+/// The one palette: every colour the debugger draws is chosen here, once, and the legend lists
+/// them from the same table, so a colour on screen always means the same thing.
+///
+/// The hues keep the trace's story apart: yellow = where the broad phase looked, magenta =
+/// what the narrow phase tested, white/cyan = the sweep, violet = substeps, red = hits, green =
+/// what the response did, cyan/orange/yellow = physics vs render vs pixel.
+
+#include <cstddef>
+#include <span>
+
+#include "imgui.h"
+
+namespace tv::ui::palette {
+
+// -- the world -----------------------------------------------------------------------------------
+inline constexpr ImU32 kBackground = IM_COL32(24, 27, 34, 255);
+inline constexpr ImU32 kGridLine = IM_COL32(52, 58, 70, 255);
+/// Occupied cells: this colour, more opaque the more items the cell holds (see occupiedFill).
+inline constexpr ImU32 kOccupied = IM_COL32(70, 110, 190, 255);
+inline constexpr ImU32 kOccupiedText = IM_COL32(150, 180, 235, 255);
+inline constexpr ImU32 kSolid = IM_COL32(112, 118, 132, 255);
+inline constexpr ImU32 kSolidEdge = IM_COL32(160, 166, 180, 255);
+inline constexpr ImU32 kBody = IM_COL32(72, 200, 170, 255);
+/// A body that no longer moves (stopped, resolved).
+inline constexpr ImU32 kBodyIdle = IM_COL32(52, 110, 98, 255);
+inline constexpr ImU32 kSelected = IM_COL32(255, 255, 255, 255);
+
+// -- what one move did (from its MoveTrace) ------------------------------------------------------
+inline constexpr ImU32 kVisitedCell = IM_COL32(240, 190, 60, 60);
+inline constexpr ImU32 kVisitedEdge = IM_COL32(240, 190, 60, 200);
+inline constexpr ImU32 kCandidate = IM_COL32(220, 100, 230, 255);
+inline constexpr ImU32 kSweep = IM_COL32(240, 240, 240, 255);
+inline constexpr ImU32 kHull = IM_COL32(90, 180, 255, 48);
+inline constexpr ImU32 kHullEdge = IM_COL32(90, 180, 255, 170);
+inline constexpr ImU32 kSubstep = IM_COL32(170, 140, 255, 220);
+inline constexpr ImU32 kHit = IM_COL32(255, 80, 80, 255);
+inline constexpr ImU32 kResponse = IM_COL32(110, 230, 110, 255);
+/// Earlier moves of the selected body, drawn faintly behind the last one.
+inline constexpr ImU32 kHistory = IM_COL32(240, 240, 240, 70);
+
+// -- where the body is drawn -------------------------------------------------------------------
+inline constexpr ImU32 kPhysics = IM_COL32(80, 220, 255, 255);
+inline constexpr ImU32 kRender = IM_COL32(255, 150, 50, 255);
+inline constexpr ImU32 kPixel = IM_COL32(255, 230, 60, 255);
+inline constexpr ImU32 kPixelGrid = IM_COL32(255, 255, 255, 22);
+
+// -- text --------------------------------------------------------------------------------------
+inline constexpr ImU32 kLabel = IM_COL32(235, 235, 235, 255);
+inline constexpr ImU32 kLabelShadow = IM_COL32(0, 0, 0, 200);
+inline constexpr ImU32 kBad = IM_COL32(255, 90, 90, 255);
+inline constexpr ImU32 kGood = IM_COL32(110, 230, 110, 255);
+inline constexpr ImU32 kDim = IM_COL32(150, 155, 165, 255);
+
+/// Fill of an occupied cell holding `count` items: deeper with the count, saturating at 8 so
+/// that one item is visible and a crowded cell still leaves its contents readable.
+[[nodiscard]] ImU32 occupiedFill(std::size_t count);
+
+/// How a legend entry is drawn: its swatch's shape says which overlay primitive it is.
+enum class Swatch { fill, outline, line, arrow, dot, dashed };
+
+struct LegendEntry {
+  ImU32 colour;
+  Swatch swatch;
+  const char* label;
+};
+
+/// Every colour above that means something in the world view, in reading order.
+[[nodiscard]] std::span<const LegendEntry> legend();
+
+}  // namespace tv::ui::palette
+
+namespace tv::ui {
+/// The debugger's look (dark, compact, square), for every program that draws it.
+void applyStyle(ImGuiStyle& style);
+}  // namespace tv::ui

@@ -1,0 +1,213 @@
+#include "tv/ui/layout.hpp"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+
+#include "tv/ui/palette.hpp"
+
+namespace tv::ui {
+
+namespace pal = palette;
+
+namespace {
+
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                    ImGuiWindowFlags_NoFocusOnAppearing;
+constexpr ImGuiWindowFlags kOverlay = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                      ImGuiWindowFlags_NoSavedSettings |
+                                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+constexpr float kMargin = 8.0f;
+
+struct Failure {
+  const char* label;
+  std::uint64_t sim::Counters::*field;
+};
+constexpr Failure kFailures[] = {
+    {"escapes", &sim::Counters::escapes}, {"overlaps", &sim::Counters::overlaps},
+    {"jitter", &sim::Counters::jitter},   {"snags", &sim::Counters::snags},
+    {"misses", &sim::Counters::misses},
+};
+
+void place(ImVec2 pos, ImVec2 size, ImVec2 pivot = {0, 0}) {
+  ImGui::SetNextWindowPos(pos, ImGuiCond_Always, pivot);
+  ImGui::SetNextWindowSize(size, ImGuiCond_Always);
+}
+
+// A borderless window that only hosts a world view.
+bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size) {
+  place(pos, size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  const bool open = ImGui::Begin(
+      name, nullptr,
+      kOverlay | ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+  ImGui::PopStyleVar(2);
+  return open;
+}
+
+}  // namespace
+
+std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerState& st,
+                                     ImVec2 size) {
+  const ImVec2 pos = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton(id, size,
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  if (st.frameView) {
+    const float top = std::min(st.coveredTop, size.y * 0.4f);
+    const float bottom = std::min(st.coveredBottom, size.y * 0.4f);
+    st.camera.frame(*st.frameView, pos, size, {pos.x, pos.y + top},
+                    {size.x, size.y - top - bottom});
+  } else {
+    st.camera.place(pos, size);
+  }
+  std::optional<std::size_t> clicked;
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    st.camera.zoom(std::pow(1.2, static_cast<double>(io.MouseWheel)), io.MousePos);
+    st.frameView.reset();
+  }
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
+    st.camera.pan(io.MouseDelta);
+    st.frameView.reset();
+  }
+  if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
+    const Vec2 p = st.camera.toWorld(io.MousePos);
+    const auto bodies = session.sim().bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (contains(bodies[i].rect, p)) clicked = i;
+    }
+  }
+  const WorldPicture pic = session.picture();
+  drawWorld(*ImGui::GetWindowDrawList(), st.camera, pic, st.overlays);
+  return clicked;
+}
+
+Actions debuggerLayout(Session& session, DebuggerState& st, ImVec2 display) {
+  // The column keeps the inspector's hit table readable; the world gets the rest.
+  const float side = std::clamp(display.x * 0.35f, 340.0f, 480.0f);
+  const float worldW = display.x - side;
+  Actions a;
+
+  if (beginCanvas("World", {0, 0}, {worldW, display.y})) {
+    if (auto pick = worldView("##world", session, st, {worldW, display.y})) a.select = pick;
+  }
+  ImGui::End();
+
+  ImGui::SetNextWindowBgAlpha(0.82f);
+  ImGui::SetNextWindowPos({kMargin, kMargin}, ImGuiCond_Always);
+  if (ImGui::Begin("HUD", nullptr, kOverlay | ImGuiWindowFlags_AlwaysAutoResize)) {
+    hudContents(session, st);
+    st.coveredTop = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() + kMargin;
+  }
+  ImGui::End();
+
+  ImGui::SetNextWindowBgAlpha(0.82f);
+  ImGui::SetNextWindowPos({kMargin, display.y - kMargin}, ImGuiCond_Always, {0, 1});
+  ImGui::SetNextWindowSize({worldW - 2 * kMargin, 0}, ImGuiCond_Always);
+  if (ImGui::Begin("Legend", nullptr, kOverlay)) {
+    legendContents(4);
+    st.coveredBottom = display.y - ImGui::GetWindowPos().y + kMargin;
+  }
+  ImGui::End();
+
+  float y = 0.0f;
+  ImGui::SetNextWindowPos({worldW, y}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({side, 0}, ImGuiCond_Always);
+  if (ImGui::Begin("Scene and mover", nullptr, kFixed)) {
+    const Actions c = controlsContents(session, st);
+    a.restart |= c.restart;
+    a.step |= c.step;
+    a.stepBack |= c.stepBack;
+    a.togglePause |= c.togglePause;
+    if (c.select) a.select = c.select;
+    y += ImGui::GetWindowHeight();
+  }
+  ImGui::End();
+
+  ImGui::SetNextWindowPos({worldW, y}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({side, 0}, ImGuiCond_Always);
+  if (ImGui::Begin("Counters", nullptr, kFixed)) {
+    countersContents(session);
+    y += ImGui::GetWindowHeight();
+  }
+  ImGui::End();
+
+  place({worldW, y}, {side, std::max(display.y - y, 60.0f)});
+  if (ImGui::Begin("Inspector", nullptr, kFixed)) inspectorContents(session);
+  ImGui::End();
+  return a;
+}
+
+void comparisonLayout(std::span<Session* const> sessions, std::span<DebuggerState> states,
+                      const std::string& title, ImVec2 display) {
+  const std::size_t n = std::min(sessions.size(), states.size());
+  if (n == 0) return;
+
+  ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
+  float top = 0.0f;
+  if (ImGui::Begin("Title", nullptr, kOverlay)) {
+    ImGui::TextUnformatted(title.c_str());
+    top = ImGui::GetWindowHeight();
+  }
+  ImGui::End();
+
+  ImGui::SetNextWindowPos({0, display.y}, ImGuiCond_Always, {0, 1});
+  ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
+  float bottom = 0.0f;
+  if (ImGui::Begin("Legend", nullptr, kOverlay)) {
+    legendContents(8);
+    bottom = ImGui::GetWindowHeight();
+  }
+  ImGui::End();
+
+  const float w = std::floor(display.x / static_cast<float>(n));
+  const float h = std::max(display.y - top - bottom, 100.0f);
+  for (std::size_t k = 0; k < n; ++k) {
+    Session& s = *sessions[k];
+    DebuggerState& st = states[k];
+    const std::string name = s.sim().moverSpec().name();
+    place({w * static_cast<float>(k), top}, {w, h});
+    if (ImGui::Begin(name.c_str(), nullptr, kFixed | ImGuiWindowFlags_NoScrollbar)) {
+      // Three lines of numbers under the picture: the verdict, the traced move, the cost.
+      const float stats = ImGui::GetTextLineHeightWithSpacing() * 3.0f + 4.0f;
+      const ImVec2 avail = ImGui::GetContentRegionAvail();
+      (void)worldView("##world", s, st, {avail.x, std::max(avail.y - stats, 40.0f)});
+      const sim::Counters& c = s.sim().counters();
+      const std::size_t bodies = s.sim().bodies().size();
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.tunnelled ? pal::kBad : pal::kGood),
+                         "tunnelled so far: %" PRIu64 " of %zu", c.tunnelled, bodies);
+      // The scene's other failure counts, where any panel has one, so the columns line up.
+      for (const auto& [label, field] : kFailures) {
+        const bool used =
+            std::any_of(sessions.begin(), sessions.begin() + static_cast<std::ptrdiff_t>(n),
+                        [&](const Session* o) { return o->sim().counters().*field != 0; });
+        if (!used) continue;
+        ImGui::SameLine();
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.*field ? pal::kBad : pal::kGood),
+                           " %s %" PRIu64, label, c.*field);
+      }
+      ImGui::SameLine();
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "  hits %" PRIu64, c.hits);
+      const auto moves = s.moves();
+      if (!moves.empty()) {
+        const MoveTrace& m = moves.back().trace;
+        ImGui::Text("tick %" PRIu64 " move: %zu cells, %zu candidates, %zu hits", moves.back().tick,
+                    m.cells.size(), m.candidates.size(), m.hits.size());
+      } else {
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "no move traced");
+      }
+      const sim::TraceStats& t = s.sim().traceStats();
+      if (t.moves > 0) {
+        ImGui::Text("candidates per move: %.2f mean over %" PRIu64 " moves",
+                    static_cast<double>(t.candidates) / static_cast<double>(t.moves), t.moves);
+      }
+    }
+    ImGui::End();
+  }
+}
+
+}  // namespace tv::ui

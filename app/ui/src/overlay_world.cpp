@@ -1,0 +1,138 @@
+// The world itself: spatial-hash cells, solids and bodies.
+#include <algorithm>
+#include <cstdio>
+
+#include "draw_util.hpp"
+#include "tv/ui/overlays.hpp"
+#include "tv/ui/palette.hpp"
+
+namespace tv::ui {
+
+namespace pal = palette;
+
+namespace {
+// Below this a cell's lines would merge into a flat tint, and its count would not fit.
+constexpr float kMinCellLines = 6.0f;
+constexpr float kMinCellCount = 18.0f;
+
+// Calls f(cell, item count) for each occupied cell in view: whichever is smaller, the cells in
+// view or the occupied cells (when zoomed far out).
+template <class F>
+void forEachOccupiedInView(const Camera& cam, const World& world, F&& f) {
+  const CellRange inView = world.grid().cellsOf(cam.view());
+  if (static_cast<std::size_t>(inView.count()) <= world.countCells()) {
+    Grid::forEachCell(inView, [&](Cell c) {
+      const std::size_t n = world.cellItems(c).size();
+      if (n > 0) f(c, n);
+    });
+  } else {
+    world.forEachOccupiedCell([&](Cell c, std::size_t n) {
+      if (inView.contains(c)) f(c, n);
+    });
+  }
+}
+}  // namespace
+
+std::span<const OverlayToggle> overlayToggles() {
+  static constexpr OverlayToggle kToggles[] = {
+      {"solids", &Overlays::solids},
+      {"bodies", &Overlays::bodies},
+      {"grid", &Overlays::grid},
+      {"occupied", &Overlays::occupied},
+      {"visited", &Overlays::visitedCells},
+      {"candidates", &Overlays::candidates},
+      {"sweep", &Overlays::sweep},
+      {"hull", &Overlays::hull},
+      {"substeps", &Overlays::substeps},
+      {"hits", &Overlays::hits},
+      {"responses", &Overlays::responses},
+      {"history", &Overlays::history},
+      {"positions", &Overlays::positions},
+      {"pixel-grid", &Overlays::pixelGrid},
+      {"labels", &Overlays::labels},
+  };
+  return kToggles;
+}
+
+void drawGrid(ImDrawList& dl, const Camera& cam, const World& world, const Overlays& on) {
+  const Grid& grid = world.grid();
+  const CellRange inView = grid.cellsOf(cam.view());
+  if (on.occupied) {
+    forEachOccupiedInView(cam, world, [&](Cell c, std::size_t n) {
+      detail::fill(dl, cam, grid.bounds(c), pal::occupiedFill(n));
+    });
+  }
+  if (on.grid && cam.toScreenLength(grid.cellSize()) >= kMinCellLines) {
+    const ImVec2 lo = cam.screenMin(), hi = cam.screenMax();
+    for (std::int64_t cx = inView.x0; cx <= inView.x1 + 1; ++cx) {
+      const float x = cam.toScreen(grid.origin({cx, 0})).x;
+      dl.AddLine({x + 0.5f, lo.y}, {x + 0.5f, hi.y}, pal::kGridLine);
+    }
+    for (std::int64_t cy = inView.y0; cy <= inView.y1 + 1; ++cy) {
+      const float y = cam.toScreen(grid.origin({0, cy})).y;
+      dl.AddLine({lo.x, y + 0.5f}, {hi.x, y + 0.5f}, pal::kGridLine);
+    }
+  }
+}
+
+void drawCellCounts(ImDrawList& dl, const Camera& cam, const World& world) {
+  if (cam.toScreenLength(world.cellSize()) < kMinCellCount) return;
+  forEachOccupiedInView(cam, world, [&](Cell c, std::size_t n) {
+    char text[24];
+    std::snprintf(text, sizeof text, "%zu", n);
+    const ImVec2 at = cam.toScreenMin(world.grid().bounds(c));
+    detail::label(dl, {at.x + 3, at.y + 2}, pal::kOccupiedText, text);
+  });
+}
+
+void drawSolids(ImDrawList& dl, const Camera& cam, std::span<const sim::Solid> solids) {
+  // Edges only once a tile is big enough on screen that they do not swallow its fill.
+  const bool edges = solids.empty() || cam.toScreenLength(solids.front().rect.w) >= 6.0f;
+  for (const sim::Solid& s : solids) {
+    if (!cam.sees(s.rect)) continue;
+    detail::fill(dl, cam, s.rect, pal::kSolid);
+    if (edges) detail::outline(dl, cam, s.rect, pal::kSolidEdge);
+  }
+}
+
+void drawBodies(ImDrawList& dl, const Camera& cam, const WorldPicture& pic) {
+  for (std::size_t i = 0; i < pic.bodies.size(); ++i) {
+    const sim::Body& b = pic.bodies[i];
+    const Rect r = i < pic.renderRects.size() ? pic.renderRects[i] : b.rect;
+    if (!cam.sees(r)) continue;
+    detail::fill(dl, cam, r, b.active ? pal::kBody : pal::kBodyIdle);
+  }
+  if (pic.selected && *pic.selected < pic.bodies.size()) {
+    const std::size_t i = *pic.selected;
+    const Rect r = i < pic.renderRects.size() ? pic.renderRects[i] : pic.bodies[i].rect;
+    if (!cam.sees(r)) return;
+    // A ring a few pixels outside the body, so even a 2 px bullet is easy to find.
+    ImVec2 a = cam.toScreenMin(r), b = cam.toScreenMax(r);
+    dl.AddRect({a.x - 4, a.y - 4}, {b.x + 4, b.y + 4}, pal::kSelected, 0.0f, 0, 1.5f);
+  }
+}
+
+void drawWorld(ImDrawList& dl, const Camera& cam, const WorldPicture& pic, const Overlays& on) {
+  dl.PushClipRect(cam.screenMin(), cam.screenMax(), true);
+  dl.AddRectFilled(cam.screenMin(), cam.screenMax(), pal::kBackground);
+  const MoveTrace* last = pic.moves.empty() ? nullptr : &pic.moves.back().trace;
+  if (pic.world) drawGrid(dl, cam, *pic.world, on);
+  if (last && pic.world) drawMoveBackdrop(dl, cam, pic.world->grid(), *last, on);
+  if (on.solids) drawSolids(dl, cam, pic.solids);
+  if (on.history && pic.moves.size() > 1)
+    drawMoveHistory(dl, cam, pic.moves.first(pic.moves.size() - 1));
+  if (on.bodies) drawBodies(dl, cam, pic);
+  // Counts go over the items, where a tile cannot hide them.
+  if (on.occupied && pic.world) drawCellCounts(dl, cam, *pic.world);
+  if (last && pic.world) drawMove(dl, cam, *pic.world, *last, on);
+  if (pic.selected && *pic.selected < pic.bodies.size()) {
+    const std::size_t i = *pic.selected;
+    const Rect physics = pic.bodies[i].rect;
+    const Rect render = i < pic.renderRects.size() ? pic.renderRects[i] : physics;
+    if (on.pixelGrid && cam.scale() >= kPixelGridScale) drawPixelGrid(dl, cam);
+    if (on.positions) drawPositions(dl, cam, physics, render, on.labels);
+  }
+  dl.PopClipRect();
+}
+
+}  // namespace tv::ui

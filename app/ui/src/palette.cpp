@@ -1,0 +1,50 @@
+#include "tv/ui/palette.hpp"
+
+#include <algorithm>
+
+namespace tv::ui::palette {
+
+ImU32 occupiedFill(std::size_t count) {
+  const std::size_t n = std::min<std::size_t>(count, 8);
+  const auto alpha = static_cast<unsigned>(24 + n * 14);  // 38 .. 136 of 255
+  return (kOccupied & ~IM_COL32_A_MASK) | (alpha << IM_COL32_A_SHIFT);
+}
+
+std::span<const LegendEntry> legend() {
+  static constexpr LegendEntry kEntries[] = {
+      {kSolid, Swatch::fill, "solid"},
+      {kOccupied, Swatch::fill, "cell: n items"},
+      {kVisitedEdge, Swatch::fill, "visited cell"},
+      {kCandidate, Swatch::outline, "candidate"},
+      {kBody, Swatch::fill, "body, moving"},
+      {kBodyIdle, Swatch::fill, "body, stopped"},
+      {kSelected, Swatch::outline, "traced body"},
+      {kSweep, Swatch::arrow, "swept segment"},
+      {kHullEdge, Swatch::fill, "swept hull"},
+      {kSubstep, Swatch::dashed, "substep boundary"},
+      {kHit, Swatch::outline, "hit rect, normal"},
+      {kHit, Swatch::dot, "touch point"},
+      {kResponse, Swatch::dashed, "response target"},
+      {kPhysics, Swatch::outline, "physics position"},
+      {kRender, Swatch::outline, "render position"},
+      {kPixel, Swatch::outline, "floored pixel"},
+  };
+  return kEntries;
+}
+
+}  // namespace tv::ui::palette
+
+namespace tv::ui {
+
+void applyStyle(ImGuiStyle& style) {
+  ImGui::StyleColorsDark(&style);
+  // Tighter rows than ImGui's default: the column fits controls, counters and the inspector at
+  // 720 px; square corners match the pixel grid.
+  style.WindowRounding = 0.0f;
+  style.FramePadding = {4.0f, 2.0f};
+  style.ItemSpacing = {8.0f, 3.0f};
+  style.CellPadding = {4.0f, 1.0f};
+  style.WindowPadding = {8.0f, 6.0f};
+}
+
+}  // namespace tv::ui

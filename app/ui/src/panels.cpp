@@ -1,0 +1,309 @@
+// The panels: controls, inspector, counters, HUD and legend, as ImGui widget contents.
+#include "tv/ui/panels.hpp"
+
+#include <cfloat>
+#include <cinttypes>
+#include <cstdio>
+#include <string>
+
+#include "tv/error.hpp"
+#include "tv/ui/palette.hpp"
+
+namespace tv::ui {
+
+namespace pal = palette;
+
+namespace {
+
+ImVec4 colour(ImU32 c) {
+  return ImGui::ColorConvertU32ToFloat4(c);
+}
+
+// The common parameters under the names the issue and the README use.
+const char* friendlyName(const std::string& name) {
+  if (name == sim::param::speed) return "velocity";
+  if (name == sim::param::tile) return "tile size";
+  if (name == sim::param::cell) return "cell size";
+  if (name == sim::param::substep) return "max substep length";
+  if (name == sim::param::size) return "body size";
+  return name.c_str();
+}
+
+void rowLabel(const char* text) {
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(text);
+  ImGui::TableSetColumnIndex(1);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+}
+
+// Applies an edit through Params::set, which validates; a rejected value is reported, not
+// clamped.
+void setDraft(DebuggerState& st, const std::string& name, double v) {
+  try {
+    st.draft.set(name, v);
+    st.error.clear();
+  } catch (const Error& e) {
+    st.error = e.what();
+  }
+}
+
+}  // namespace
+
+void syncDraft(DebuggerState& st, const Session& session) {
+  st.draft = session.sim().params();
+  st.draftScene = session.sim().scene().name;
+  st.draftMover = session.sim().moverSpec().name();
+}
+
+Actions controlsContents(const Session& session, DebuggerState& st) {
+  Actions a;
+  if (ImGui::BeginTable("choice", 2, ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, 150.0f);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+    rowLabel("scene");
+    if (ImGui::BeginCombo("##scene", st.draftScene.c_str())) {
+      for (const sim::SceneDef& s : sim::builtinScenes().all()) {
+        if (ImGui::Selectable(s.name.c_str(), s.name == st.draftScene)) {
+          st.draftScene = s.name;
+          st.draft = s.defaults();
+          a.restart = true;
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.description.c_str());
+      }
+      ImGui::EndCombo();
+    }
+    rowLabel("mover");
+    if (ImGui::BeginCombo("##mover", st.draftMover.c_str())) {
+      for (const std::string_view m : moverNames()) {
+        const std::string name(m);
+        if (ImGui::Selectable(name.c_str(), name == st.draftMover)) {
+          st.draftMover = name;
+          a.restart = true;
+        }
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%s", std::string(moverDescription(m)).c_str());
+      }
+      ImGui::EndCombo();
+    }
+    for (const sim::ParamSpec& spec : st.draft.specs()) {
+      const std::string label =
+          std::string(friendlyName(spec.name)) + (spec.unit.empty() ? "" : " (" + spec.unit + ")");
+      rowLabel(label.c_str());
+      double v = st.draft.get(spec.name);
+      const double speed = spec.integer ? 1.0 : (v != 0.0 ? std::abs(v) * 0.01 : 0.01);
+      const std::string id = "##" + spec.name;
+      if (ImGui::DragScalar(id.c_str(), ImGuiDataType_Double, &v, static_cast<float>(speed),
+                            &spec.min, &spec.max, spec.integer ? "%.0f" : "%.6g")) {
+        setDraft(st, spec.name, v);
+      }
+      if (ImGui::IsItemDeactivatedAfterEdit()) a.restart = true;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.description.c_str());
+    }
+    rowLabel("render rate (Hz)");
+    const double lo = 0.0, hi = 1000.0;
+    ImGui::DragScalar("##render", ImGuiDataType_Double, &st.renderHz, 1.0f, &lo, &hi, "%.0f");
+    rowLabel("traced body");
+    int body = session.selected() ? static_cast<int>(*session.selected()) : -1;
+    if (ImGui::InputInt("##body", &body) && body >= 0 &&
+        static_cast<std::size_t>(body) < session.sim().bodies().size()) {
+      a.select = static_cast<std::size_t>(body);
+    }
+    ImGui::EndTable();
+  }
+  if (!st.error.empty()) ImGui::TextColored(colour(pal::kBad), "%s", st.error.c_str());
+
+  a.restart |= ImGui::Button("Restart (R)");
+  ImGui::SameLine();
+  a.stepBack = ImGui::Button("Back (,)");
+  ImGui::SameLine();
+  a.step = ImGui::Button("Step (.)");
+  ImGui::SameLine();
+  a.togglePause = ImGui::Button(st.paused ? "Play (Space)" : "Pause (Space)");
+
+  if (ImGui::CollapsingHeader("Overlays") && ImGui::BeginTable("overlays", 3)) {
+    for (const OverlayToggle& t : overlayToggles()) {
+      ImGui::TableNextColumn();
+      ImGui::Checkbox(t.name, &(st.overlays.*t.flag));
+    }
+    ImGui::EndTable();
+  }
+  return a;
+}
+
+void inspectorContents(const Session& session) {
+  const sim::Simulation& s = session.sim();
+  if (!session.selected()) {
+    ImGui::TextColored(colour(pal::kDim), "no body selected");
+    return;
+  }
+  const std::size_t i = *session.selected();
+  const sim::Body& b = s.bodies()[i];
+  ImGui::Text("body %zu  %s", i, b.active ? "moving" : "stopped");
+  ImGui::Text("at (%.3f, %.3f)  size %g x %g", b.rect.x, b.rect.y, b.rect.w, b.rect.h);
+  ImGui::Text("velocity (%.1f, %.1f) px/s", b.velocity.x, b.velocity.y);
+  const auto moves = session.moves();
+  if (moves.empty()) {
+    ImGui::TextColored(colour(pal::kDim), "no move traced yet");
+    return;
+  }
+  // Newest first: the move on screen is the one to read.
+  for (std::size_t k = moves.size(); k-- > 0;) {
+    const TracedMove& tm = moves[k];
+    const MoveTrace& m = tm.trace;
+    ImGui::PushID(static_cast<int>(k));
+    const ImGuiTreeNodeFlags open = k + 1 == moves.size() ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+    const bool shown = ImGui::TreeNodeEx("move", open, "tick %" PRIu64 " move by %s: %zu hits",
+                                         tm.tick, std::string(m.mover).c_str(), m.hits.size());
+    if (shown) {
+      ImGui::Text("%zu cells, %zu candidates, %zu legs, %zu substeps", m.cells.size(),
+                  m.candidates.size(), m.legs.size(), m.substeps.size());
+      ImGui::Text("(%.3f, %.3f) -> goal (%.3f, %.3f)", m.start.x, m.start.y, m.goal.x, m.goal.y);
+      ImGui::Text("ended at (%.3f, %.3f)", m.final.x, m.final.y);
+      // Two lines per hit, the fields of the Collision record as core filled them.
+      for (std::size_t h = 0; h < m.hits.size(); ++h) {
+        const Collision& c = m.hits[h];
+        const std::string response(s.world().responseName(c.response));
+        char ti[32];
+        std::snprintf(ti, sizeof ti, c.overlaps ? "overlapping" : "ti %.4f", c.ti);
+        ImGui::TextColored(colour(pal::kHit), "hit %zu", h + 1);
+        ImGui::SameLine();
+        ImGui::Text("%s  %s  normal %+.0f,%+.0f  %s%s", session.describe(c.other).c_str(), ti,
+                    c.normal.x + 0.0, c.normal.y + 0.0, response.c_str(),
+                    c.corner ? " (corner)" : "");
+        ImGui::TextColored(colour(pal::kDim), "   touch (%.3f, %.3f)  %s (%.3f, %.3f)", c.touch.x,
+                           c.touch.y, "target", c.target.x, c.target.y);
+      }
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+}
+
+void countersContents(const Session& session) {
+  const sim::Simulation& s = session.sim();
+  const sim::Counters& c = s.counters();
+  // Rows a scene does not use stay hidden; a failure count that is not zero shows red.
+  struct Row {
+    const char* name;
+    std::uint64_t value;
+    bool always;
+    bool failure;
+  };
+  const Row rows[] = {
+      {"tunnelled so far", c.tunnelled, true, true},
+      {"far-side push-outs", c.farPushOuts, false, true},
+      {"hits", c.hits, true, false},
+      {"misses", c.misses, false, false},
+      {"escapes", c.escapes, false, true},
+      {"overlaps", c.overlaps, false, true},
+      {"jitter", c.jitter, false, true},
+      {"snags", c.snags, false, true},
+      {"jumps", c.jumps, false, false},
+      {"landings", c.landings, false, false},
+      {"respawns", c.respawns, false, false},
+      {"moves", c.moves, true, false},
+      {"collisions", c.collisions, true, false},
+  };
+  if (ImGui::BeginTable("counters", 2, ImGuiTableFlags_SizingStretchProp)) {
+    for (const Row& r : rows) {
+      if (!r.always && r.value == 0) continue;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(r.name);
+      ImGui::TableNextColumn();
+      const bool bad = r.failure && r.value != 0;
+      ImGui::TextColored(colour(bad ? pal::kBad : pal::kLabel), "%" PRIu64, r.value);
+    }
+    const sim::TraceStats& t = s.traceStats();
+    const auto moves = session.moves();
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("candidates per move");
+    ImGui::TableNextColumn();
+    if (t.moves > 0) {
+      ImGui::Text("%zu last, %.2f mean", moves.empty() ? 0 : moves.back().trace.candidates.size(),
+                  static_cast<double>(t.candidates) / static_cast<double>(t.moves));
+    } else {
+      ImGui::TextColored(colour(pal::kDim), "(no traced body)");
+    }
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("cells per move");
+    ImGui::TableNextColumn();
+    if (t.moves > 0) {
+      ImGui::Text("%zu last, %.2f mean", moves.empty() ? 0 : moves.back().trace.cells.size(),
+                  static_cast<double>(t.cells) / static_cast<double>(t.moves));
+    }
+    ImGui::EndTable();
+  }
+}
+
+void hudContents(const Session& session, const DebuggerState& st) {
+  const sim::Simulation& s = session.sim();
+  ImGui::Text("%s", s.scene().name.c_str());
+  ImGui::SameLine();
+  ImGui::TextColored(colour(pal::kDim), "|");
+  ImGui::SameLine();
+  ImGui::Text("%s", s.moverSpec().name().c_str());
+  ImGui::SameLine();
+  ImGui::TextColored(colour(pal::kDim), "|");
+  ImGui::SameLine();
+  ImGui::Text("tick %" PRIu64, s.ticks());
+  ImGui::SameLine();
+  ImGui::TextColored(colour(pal::kDim), "|");
+  ImGui::SameLine();
+  ImGui::TextColored(colour(st.paused ? pal::kRender : pal::kGood),
+                     st.paused ? "paused" : "running");
+  // The timing line holds only simulated time: a wall-clock value would break byte-exact goldens.
+  char render[32] = "= tick";
+  if (session.interpolating()) std::snprintf(render, sizeof render, "%.0f Hz", st.renderHz);
+  ImGui::TextColored(colour(pal::kDim), "dt %.2f ms   render %s   alpha %.3f   zoom %.2f px/unit",
+                     s.dt() * 1000.0, render, session.interpolating() ? s.alpha() : 1.0,
+                     st.camera.scale());
+}
+
+void legendContents(int columns) {
+  if (!ImGui::BeginTable("legend", columns)) return;
+  for (const pal::LegendEntry& e : pal::legend()) {
+    ImGui::TableNextColumn();
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float s = ImGui::GetTextLineHeight();
+    ImDrawList& dl = *ImGui::GetWindowDrawList();
+    const ImVec2 a{p.x + 1, p.y + 1}, b{p.x + s - 1, p.y + s - 1};
+    const ImVec2 mid{(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
+    switch (e.swatch) {
+      case pal::Swatch::fill:
+        dl.AddRectFilled(a, b, e.colour | IM_COL32_A_MASK);
+        break;
+      case pal::Swatch::outline:
+        dl.AddRect(a, b, e.colour, 0.0f, 0, 2.0f);
+        break;
+      case pal::Swatch::line:
+        dl.AddLine({a.x, mid.y}, {b.x, mid.y}, e.colour, 2.0f);
+        break;
+      case pal::Swatch::arrow:
+        dl.AddLine({a.x, mid.y}, {b.x - 4, mid.y}, e.colour, 1.5f);
+        dl.AddTriangleFilled({b.x, mid.y}, {b.x - 5, mid.y - 4}, {b.x - 5, mid.y + 4}, e.colour);
+        break;
+      case pal::Swatch::dot:
+        dl.AddCircleFilled(mid, 3.5f, e.colour);
+        break;
+      case pal::Swatch::dashed:
+        for (float x = a.x; x < b.x; x += 4.0f) {
+          dl.AddLine({x, a.y + 0.5f}, {x + 2, a.y + 0.5f}, e.colour);
+          dl.AddLine({x, b.y - 0.5f}, {x + 2, b.y - 0.5f}, e.colour);
+        }
+        dl.AddLine({a.x + 0.5f, a.y}, {a.x + 0.5f, b.y}, e.colour);
+        dl.AddLine({b.x - 0.5f, a.y}, {b.x - 0.5f, b.y}, e.colour);
+        break;
+    }
+    ImGui::Dummy({s, s});
+    ImGui::SameLine();
+    ImGui::TextUnformatted(e.label);
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace tv::ui
