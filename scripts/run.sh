@@ -1,9 +1,47 @@
 #!/usr/bin/env bash
-# The main job: builds Release and runs the comparison of every mover on the bullets scene
-# (extra arguments go to tv-run, e.g. --list, or --scene crowd --mover continuous).
+# The main job. Builds Release, then:
+# - with a display: opens the debugger (extra arguments go to tv-debugger);
+# - without one (or with --headless): renders the before/after comparison images into
+#   out/comparisons/ and prints the tunnelling table, measured.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh all
 cmake --preset release >/dev/null
-cmake --build --preset release --target tv-run >&2
-exec build/release/app/cli/tv-run "$@"
+build=build/release
+
+headless=0
+if [ "${1:-}" = --headless ]; then
+  headless=1
+  shift
+fi
+if [ $headless = 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; }; then
+  if cmake --build --preset release --target tv-debugger >&2 2>/dev/null; then
+    exec "$build/app/viewer/tv-debugger" "$@"
+  fi
+  echo "run.sh: the debugger is not built here; rendering the comparison images instead" >&2
+fi
+
+cmake --build --preset release --target tv-render tv-run >&2
+if cmake --build --preset release --target tv-bench >/dev/null 2>&1; then bench=1; else bench=0; fi
+
+# Each line: file name | tv-render arguments. The moment each naive mover fails, beside the fix.
+out=out/comparisons
+mkdir -p "$out"
+while IFS='|' read -r name args; do
+  # shellcheck disable=SC2086  # the arguments are words by design
+  "$build/app/headless/tv-render" $args --out "$out/$name.png" >/dev/null
+  echo "  $out/$name.png"
+done <<'LIST' > "$out/index.txt"
+tunnel-1920|--scene bullets-wall --compare discrete,substep-discrete,continuous --tick 2 --body 2 --view follow
+tunnel-diagonal|--scene bullets-wall --angle 45 --cell 16 --compare sweep,substep-sweep,continuous --tick 2 --body 2 --view follow
+bounce-gap|--scene bounce-gap --compare discrete,substep-discrete,continuous --tick 1 --body 0 --view follow
+seam-snag|--scene seam-walk --speed 250 --compare discrete,continuous --tick 18 --body 0 --view follow
+LIST
+echo "Comparison images (before/after, side by side), in $out/:"
+cat "$out/index.txt"
+echo
+
+if [ $bench = 1 ]; then
+  exec "$build/app/bench/tv-bench" tunnel --out out/bench
+fi
+exec "$build/app/cli/tv-run"
