@@ -33,7 +33,9 @@ std::uint64_t orderedKey(double d) {
   const auto u = std::bit_cast<std::uint64_t>(d);
   return (u & kSign) ? ~u : (u | kSign);
 }
-double fromKey(std::uint64_t k) { return std::bit_cast<double>((k & kSign) ? (k & ~kSign) : ~k); }
+double fromKey(std::uint64_t k) {
+  return std::bit_cast<double>((k & kSign) ? (k & ~kSign) : ~k);
+}
 
 }  // namespace
 

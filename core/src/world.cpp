@@ -96,6 +96,7 @@ ItemId World::add(const Rect& r) {
     index = freeSlots_.back();
     freeSlots_.pop_back();
   } else {
+    if (slots_.size() >= Entry::kShared) fail(kAdd, "the world holds 2^31 items already");
     index = static_cast<std::uint32_t>(slots_.size());
     slots_.emplace_back();
     stamp_.push_back(0);
@@ -114,7 +115,7 @@ ItemId World::add(const Rect& r) {
 void World::remove(ItemId id) {
   slot(id, "tv::World::remove");
   Slot& s = slots_[id.index];
-  eraseCells(id.index, s.cells);
+  eraseCells(id.index);
   dropExtent(s.rect);
   s.alive = false;
   ++s.generation;
@@ -132,13 +133,13 @@ void World::place(std::uint32_t index, const Rect& r) {
   Slot& s = slots_[index];
   const CellRange cells = grid_.cellsOf(r);
   if (cells != s.cells) {
-    eraseCells(index, s.cells);
+    eraseCells(index);
     insertCells(index, r, cells);
     s.cells = cells;
   } else {
-    Grid::forEachCell(cells, [&](Cell c) {
-      for (Entry& e : cells_[findCell(c)]) {
-        if (e.slot == index) {
+    forEachCellOf(index, [&](std::uint32_t k) {
+      for (Entry& e : cells_[k]) {
+        if (e.slot() == index) {
           e.rect = r;
           break;
         }
@@ -152,20 +153,30 @@ void World::place(std::uint32_t index, const Rect& r) {
   s.rect = r;
 }
 
-void World::update(ItemId id, Vec2 position) { update(id, slot(id, kUpdate).rect.at(position)); }
+void World::update(ItemId id, Vec2 position) {
+  update(id, slot(id, kUpdate).rect.at(position));
+}
 
 bool World::has(ItemId id) const {
   return id.valid() && id.index < slots_.size() && slots_[id.index].alive &&
          slots_[id.index].generation == id.generation;
 }
 
-Rect World::rect(ItemId id) const { return slot(id, "tv::World::rect").rect; }
+Rect World::rect(ItemId id) const {
+  return slot(id, "tv::World::rect").rect;
+}
 
-std::uint64_t World::order(ItemId id) const { return slot(id, "tv::World::order").order; }
+std::uint64_t World::order(ItemId id) const {
+  return slot(id, "tv::World::order").order;
+}
 
-double World::minExtent() const { return extents_.empty() ? 0.0 : extents_.begin()->first; }
+double World::minExtent() const {
+  return extents_.empty() ? 0.0 : extents_.begin()->first;
+}
 
-void World::addExtent(const Rect& r) { ++extents_[std::min(r.w, r.h)]; }
+void World::addExtent(const Rect& r) {
+  ++extents_[std::min(r.w, r.h)];
+}
 
 void World::dropExtent(const Rect& r) {
   const auto it = extents_.find(std::min(r.w, r.h));
@@ -175,12 +186,16 @@ void World::dropExtent(const Rect& r) {
 
 // [SECTION] spatial hash ------------------------------------------------------------------------
 
-std::uint32_t World::findCell(Cell c) const {
+const World::Bucket& World::findBucket(Cell c) const {
   const std::size_t mask = table_.size() - 1;
   for (std::size_t i = hashCell(c) & mask;; i = (i + 1) & mask) {
     const Bucket& b = table_[i];
-    if (b.cell == kNoCell || b.key == c) return b.cell;
+    if (b.cell == kNoCell || b.key == c) return b;
   }
+}
+
+std::uint32_t World::findCell(Cell c) const {
+  return findBucket(c).cell;
 }
 
 std::uint32_t World::cellFor(Cell c) {
@@ -193,7 +208,8 @@ std::uint32_t World::cellFor(Cell c) {
   const std::size_t mask = table_.size() - 1;
   std::size_t i = hashCell(c) & mask;
   while (table_[i].cell != kNoCell) i = (i + 1) & mask;
-  table_[i] = {c, k};
+  table_[i] = {c, nullptr, 0, k};
+  cellBucket_.push_back(static_cast<std::uint32_t>(i));
   return k;
 }
 
@@ -203,19 +219,45 @@ void World::growHash() {
   for (std::uint32_t k = 0; k < cellKeys_.size(); ++k) {
     std::size_t i = hashCell(cellKeys_[k]) & mask;
     while (table[i].cell != kNoCell) i = (i + 1) & mask;
-    table[i] = {cellKeys_[k], k};
+    table[i] = {cellKeys_[k], cells_[k].data(), static_cast<std::uint32_t>(cells_[k].size()), k};
+    cellBucket_[k] = static_cast<std::uint32_t>(i);
   }
   table_ = std::move(table);
 }
 
+void World::syncBucket(std::uint32_t k) {
+  Bucket& b = table_[cellBucket_[k]];
+  b.data = cells_[k].data();
+  b.size = static_cast<std::uint32_t>(cells_[k].size());
+}
+
 void World::insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r) {
-  const std::uint32_t shared = r.count() > 1 ? 1u : 0u;
+  const std::uint32_t tag = slot | (r.count() > 1 ? Entry::kShared : 0u);
+  const std::uint32_t generation = slots_[slot].generation;
+  std::size_t n = 0;
   Grid::forEachCell(r, [&](Cell c) {
-    auto& items = cells_[cellFor(c)];
+    const std::uint32_t k = cellFor(c);
+    if (n < kCachedCells) slots_[slot].cellIds[n] = k;
+    ++n;
+    auto& items = cells_[k];
     if (items.empty()) ++occupiedCells_;
-    if (items.size() == items.capacity()) regrowCell(items, std::max<std::size_t>(4, 2 * items.size()));
-    items.push_back({rect, slot, shared});
+    if (items.size() == items.capacity()) {
+      regrowCell(items, std::max<std::size_t>(4, 2 * items.size()));
+    }
+    items.push_back({rect, tag, generation});
+    syncBucket(k);
   });
+}
+
+template <class F>
+void World::forEachCellOf(std::uint32_t slot, F&& f) {
+  // Items of up to kCachedCells cells (all small ones) remember their cells: no hashing.
+  const Slot& s = slots_[slot];
+  if (s.cells.count() <= static_cast<std::int64_t>(kCachedCells)) {
+    for (std::int64_t i = 0; i < s.cells.count(); ++i) f(s.cellIds[static_cast<std::size_t>(i)]);
+    return;
+  }
+  Grid::forEachCell(s.cells, [&](Cell c) { f(findCell(c)); });
 }
 
 // A cell's entries live in a buffer of a power-of-two capacity. Buffers are traded through
@@ -255,13 +297,12 @@ void World::reservePools(std::size_t pool) {
   }
 }
 
-void World::eraseCells(std::uint32_t slot, const CellRange& r) {
-  Grid::forEachCell(r, [&](Cell c) {
-    const std::uint32_t k = findCell(c);
+void World::eraseCells(std::uint32_t slot) {
+  forEachCellOf(slot, [&](std::uint32_t k) {
     assert(k != kNoCell);
     auto& items = cells_[k];
-    const auto it = std::find_if(items.begin(), items.end(),
-                                 [&](const Entry& e) { return e.slot == slot; });
+    const auto it =
+        std::find_if(items.begin(), items.end(), [&](const Entry& e) { return e.slot() == slot; });
     assert(it != items.end());
     *it = items.back();
     items.pop_back();
@@ -271,6 +312,7 @@ void World::eraseCells(std::uint32_t slot, const CellRange& r) {
       const auto pool = static_cast<std::size_t>(std::countr_zero(smaller));
       if (pool < spares_.size() && !spares_[pool].empty()) regrowCell(items, smaller);
     }
+    syncBucket(k);
   });
 }
 
@@ -278,7 +320,7 @@ std::vector<std::uint32_t> World::cellItems(Cell c) const {
   std::vector<std::uint32_t> out;
   const std::uint32_t k = findCell(c);
   if (k != kNoCell) {
-    for (const Entry& e : cells_[k]) out.push_back(e.slot);
+    for (const Entry& e : cells_[k]) out.push_back(e.slot());
   }
   return out;
 }
@@ -300,14 +342,14 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, Broad
   if (self != ItemId::kNone) stamp_[self] = epoch;
   const auto visit = [&](Cell c) {
     if (trace) trace->cells.push_back(c);
-    const std::uint32_t k = findCell(c);
-    if (k == kNoCell) return;
-    for (const Entry& e : cells_[k]) {
-      if (e.shared || e.slot == self) {
-        if (stamp_[e.slot] == epoch) continue;
-        stamp_[e.slot] = epoch;
+    const Bucket& b = findBucket(c);
+    for (const Entry& e : std::span<const Entry>(b.data, b.size)) {
+      const std::uint32_t slot = e.slot();
+      if (e.shared() || slot == self) {
+        if (stamp_[slot] == epoch) continue;
+        stamp_[slot] = epoch;
       }
-      f(e.slot, e.rect);
+      f(slot, e.generation, e.rect);
     }
   };
   if (broad == BroadPhase::swept) {
@@ -321,54 +363,60 @@ namespace {
 
 // Collision order: overlaps (deepest first, ti is minus the area), then ti, then ordinary hits
 // before exact corner hits, then add order.
-bool before(const Collision& a, std::uint64_t orderA, const Collision& b, std::uint64_t orderB) {
+template <class EarlierAdded>
+bool before(const Collision& a, const Collision& b, EarlierAdded aWasAddedFirst) {
   if (a.ti != b.ti) return a.ti < b.ti;
   if (a.corner != b.corner) return !a.corner;
-  return orderA < orderB;
+  return aWasAddedFirst();
 }
 
 }  // namespace
 
-bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
-                     BroadPhase broad, MoveTrace* trace, Collision& best) const {
+bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
+                     MoveTrace* trace, Collision& best) const {
   const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
-  std::uint64_t bestOrder = 0;
   bool found = false;
   // Only what meets the move's bounding box can be hit: four compares before the exact test.
   const Rect hull = unite(r, r.at(goal));
-  forEachCandidate(self, r, goal, broad, trace, [&](std::uint32_t other, const Rect& otherRect) {
-    if (trace) trace->candidates.push_back({other, slots_[other].generation});
-    if (!overlaps(hull, otherRect)) return;
-    if (!excluded_.empty() &&
-        std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) {
-      return;
-    }
-    const Sweep s = sweepRect(r, goal, otherRect);
-    if (s.kind == SweepKind::miss) return;
-    const Slot& o = slots_[other];
-    const ItemId otherId{other, o.generation};
-    Collision c;
-    c.overlaps = s.kind == SweepKind::overlap;
-    c.corner = s.corner;
-    c.ti = s.ti;
-    if (found && !before(c, o.order, best, bestOrder)) return;
-    const ResponseId resp = filter(selfId, otherId);
-    if (resp == response::ignore) return;
-    if (resp >= responses_.size()) {
-      fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
-    }
-    c.item = selfId;
-    c.other = otherId;
-    c.move = goal - r.position();
-    c.normal = s.normal;
-    c.touch = s.touch;
-    c.itemRect = r;
-    c.otherRect = o.rect;
-    c.response = resp;
-    best = c;
-    bestOrder = o.order;
-    found = true;
-  });
+  forEachCandidate(self, r, goal, broad, trace,
+                   [&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect) {
+                     const ItemId otherId{other, generation};
+                     if (trace) trace->candidates.push_back(otherId);
+                     if (!overlaps(hull, otherRect)) return;
+                     if (!excluded_.empty() &&
+                         std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) {
+                       return;
+                     }
+                     const Sweep s = sweepRect(r, goal, otherRect);
+                     if (s.kind == SweepKind::miss) return;
+                     Collision c;
+                     c.overlaps = s.kind == SweepKind::overlap;
+                     c.corner = s.corner;
+                     c.ti = s.ti;
+                     // Add order breaks exact ties only, so the slots (a cache miss each) are read
+                     // only then.
+                     if (found && !before(c, best, [&] {
+                           return slots_[other].order < slots_[best.other.index].order;
+                         })) {
+                       return;
+                     }
+                     const ResponseId resp = filter(selfId, otherId);
+                     if (resp == response::ignore) return;
+                     if (resp >= responses_.size()) {
+                       fail(kMove, "filter returned response " + std::to_string(resp) +
+                                       ", which is not registered");
+                     }
+                     c.item = selfId;
+                     c.other = otherId;
+                     c.move = goal - r.position();
+                     c.normal = s.normal;
+                     c.touch = s.touch;
+                     c.itemRect = r;
+                     c.otherRect = otherRect;
+                     c.response = resp;
+                     best = c;
+                     found = true;
+                   });
   return found;
 }
 
@@ -480,12 +528,11 @@ void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) cons
   queryScratch_.clear();
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
   forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr,
-                   [&](std::uint32_t other, const Rect& rect) {
+                   [&](std::uint32_t other, std::uint32_t, const Rect& rect) {
                      if (overlaps(r, rect)) queryScratch_.push_back(other);
                    });
-  std::sort(queryScratch_.begin(), queryScratch_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return slots_[a].order < slots_[b].order;
-  });
+  std::sort(queryScratch_.begin(), queryScratch_.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return slots_[a].order < slots_[b].order; });
   for (const std::uint32_t k : queryScratch_) out.push_back({k, slots_[k].generation});
 }
 
@@ -502,10 +549,10 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
   bool any = false;
   forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr,
-                   [&](std::uint32_t other, const Rect& rect) {
-    if (any || !overlaps(r, rect)) return;
-    any = filter(skip, ItemId{other, slots_[other].generation}) != response::ignore;
-  });
+                   [&](std::uint32_t other, std::uint32_t generation, const Rect& rect) {
+                     if (any || !overlaps(r, rect)) return;
+                     any = filter(skip, ItemId{other, generation}) != response::ignore;
+                   });
   return any;
 }
 
@@ -521,12 +568,11 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
   const std::uint32_t cell = findCell(grid_.cellAt(p));
   if (cell != kNoCell) {
     for (const Entry& e : cells_[cell]) {
-      if (contains(e.rect, p)) queryScratch_.push_back(e.slot);
+      if (contains(e.rect, p)) queryScratch_.push_back(e.slot());
     }
   }
-  std::sort(queryScratch_.begin(), queryScratch_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return slots_[a].order < slots_[b].order;
-  });
+  std::sort(queryScratch_.begin(), queryScratch_.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return slots_[a].order < slots_[b].order; });
   std::vector<ItemId> out;
   for (const std::uint32_t k : queryScratch_) out.push_back({k, slots_[k].generation});
   return out;
@@ -545,13 +591,13 @@ std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
                     "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
   }
   std::vector<SegmentHit> out;
-  forEachCandidate(ItemId::kNone, p, b, BroadPhase::swept, nullptr,
-                   [&](std::uint32_t other, const Rect& rect) {
-    const SegmentClip c = clipSegment(a, b, rect);
-    if (!c.hit) return;
-    out.push_back({{other, slots_[other].generation}, c.t0, c.t1, a + (b - a) * c.t0,
-                   a + (b - a) * c.t1});
-  });
+  forEachCandidate(
+      ItemId::kNone, p, b, BroadPhase::swept, nullptr,
+      [&](std::uint32_t other, std::uint32_t generation, const Rect& rect) {
+        const SegmentClip c = clipSegment(a, b, rect);
+        if (!c.hit) return;
+        out.push_back({{other, generation}, c.t0, c.t1, a + (b - a) * c.t0, a + (b - a) * c.t1});
+      });
   std::sort(out.begin(), out.end(), [&](const SegmentHit& x, const SegmentHit& y) {
     if (x.t0 != y.t0) return x.t0 < y.t0;
     return slots_[x.item.index].order < slots_[y.item.index].order;

@@ -141,9 +141,12 @@ class World {
  private:
   static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
 
+  static constexpr std::size_t kCachedCells = 4;
+
   struct Slot {
     Rect rect;
     CellRange cells;
+    std::uint32_t cellIds[kCachedCells] = {};  // the cells' indices, when there are at most 4
     std::uint64_t order = 0;
     std::uint32_t generation = 0;
     bool alive = false;
@@ -155,10 +158,15 @@ class World {
   void validateOptions(const MoveOptions& o, std::string_view where) const;
 
   void place(std::uint32_t index, const Rect& r);  // update without validation
-  std::uint32_t findCell(Cell c) const;  // kNoCell if absent
-  std::uint32_t cellFor(Cell c);         // creates it
+  struct Bucket;
+  const Bucket& findBucket(Cell c) const;  // its `cell` is kNoCell if absent
+  std::uint32_t findCell(Cell c) const;    // kNoCell if absent
+  std::uint32_t cellFor(Cell c);           // creates it
   void insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r);
-  void eraseCells(std::uint32_t slot, const CellRange& r);
+  void eraseCells(std::uint32_t slot);
+  void syncBucket(std::uint32_t cell);
+  template <class F>
+  void forEachCellOf(std::uint32_t slot, F&& f);
   struct Entry;
   void regrowCell(std::vector<Entry>& items, std::size_t capacity);
   void reservePools(std::size_t pool);
@@ -186,19 +194,27 @@ class World {
   // Spatial hash: open addressing from cell to an index into cellKeys_/cells_. Cells are never
   // freed, so a scene that keeps moving over the same ground stops allocating. Each cell keeps
   // a copy of its items' rects, so the broad phase rejects candidates without touching slots_
-  // (the cache misses that dominate a crowd), and `shared` marks items in more than one cell:
+  // (the cache misses that dominate a crowd), and `kShared` marks items in more than one cell:
   // only those need the visit stamp that keeps a candidate from being tested twice.
   struct Entry {
+    static constexpr std::uint32_t kShared = 0x80000000u;
     Rect rect;
-    std::uint32_t slot;
-    std::uint32_t shared;
+    std::uint32_t tag;         // slot, | kShared when the item is in more than one cell
+    std::uint32_t generation;  // the item's: a candidate becomes a handle without slots_
+    [[nodiscard]] std::uint32_t slot() const { return tag & ~kShared; }
+    [[nodiscard]] bool shared() const { return (tag & kShared) != 0; }
   };
+  // A bucket mirrors its cell's entries (pointer and count), so the broad phase reads a cell
+  // with two dependent loads instead of three; every change to a cell's entries re-syncs it.
   struct Bucket {
     Cell key;
+    const Entry* data = nullptr;
+    std::uint32_t size = 0;
     std::uint32_t cell = kNoCell;
   };
   std::vector<Bucket> table_;
   std::vector<Cell> cellKeys_;
+  std::vector<std::uint32_t> cellBucket_;  // per cell, its bucket in table_
   std::vector<std::vector<Entry>> cells_;
   std::vector<std::vector<std::vector<Entry>>> spares_;  // [log2 capacity]: buffers to trade
   std::vector<std::size_t> buffers_;  // [log2 capacity]: buffers made, in cells or spare
