@@ -336,8 +336,8 @@ std::uint32_t World::nextEpoch() const {
 // [SECTION] moving ------------------------------------------------------------------------------
 
 template <class F>
-void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, BroadPhase broad,
-                             MoveTrace* trace, F&& f) const {
+void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
+                             BroadPhase broad, MoveTrace* trace, F&& f) const {
   const std::uint32_t epoch = nextEpoch();
   if (self != ItemId::kNone) stamp_[self] = epoch;
   const auto visit = [&](Cell c) {
@@ -352,10 +352,13 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, Broad
       f(slot, e.generation, e.rect);
     }
   };
-  if (broad == BroadPhase::swept) {
+  // A move whose bounding box spans a few cells visits them all: the swept walk would skip at
+  // most one or two, for more arithmetic than those cells cost to scan.
+  const CellRange box = grid_.cellsOf(hull);
+  if (broad == BroadPhase::swept && box.count() > kDirectCells) {
     grid_.forEachSweptCell(r, goal, visit);
   } else {
-    Grid::forEachCell(grid_.cellsOf(unite(r, r.at(goal))), visit);
+    Grid::forEachCell(box, visit);
   }
 }
 
@@ -378,7 +381,7 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
   bool found = false;
   // Only what meets the move's bounding box can be hit: four compares before the exact test.
   const Rect hull = unite(r, r.at(goal));
-  forEachCandidate(self, r, goal, broad, trace,
+  forEachCandidate(self, r, goal, hull, broad, trace,
                    [&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect) {
                      const ItemId otherId{other, generation};
                      if (trace) trace->candidates.push_back(otherId);
@@ -527,7 +530,7 @@ void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) cons
   out.clear();
   queryScratch_.clear();
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
-  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr,
+  forEachCandidate(self, r, r.position(), r, BroadPhase::bounds, nullptr,
                    [&](std::uint32_t other, std::uint32_t, const Rect& rect) {
                      if (overlaps(r, rect)) queryScratch_.push_back(other);
                    });
@@ -548,7 +551,7 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
   }
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
   bool any = false;
-  forEachCandidate(self, r, r.position(), BroadPhase::bounds, nullptr,
+  forEachCandidate(self, r, r.position(), r, BroadPhase::bounds, nullptr,
                    [&](std::uint32_t other, std::uint32_t generation, const Rect& rect) {
                      if (any || !overlaps(r, rect)) return;
                      any = filter(skip, ItemId{other, generation}) != response::ignore;
@@ -592,7 +595,7 @@ std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
   }
   std::vector<SegmentHit> out;
   forEachCandidate(
-      ItemId::kNone, p, b, BroadPhase::swept, nullptr,
+      ItemId::kNone, p, b, unite(p, p.at(b)), BroadPhase::swept, nullptr,
       [&](std::uint32_t other, std::uint32_t generation, const Rect& rect) {
         const SegmentClip c = clipSegment(a, b, rect);
         if (!c.hit) return;

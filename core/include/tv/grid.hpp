@@ -42,7 +42,11 @@ class Grid {
   /// The cell holding coordinate v. Monotone in v, so two closed intervals that meet always
   /// share a cell, whatever the rounding of v · (1 / size).
   [[nodiscard]] std::int64_t index(double v) const {
-    return static_cast<std::int64_t>(std::floor(v * inverse_));
+    // floor() without the libm call: truncate, then step down for negative non-integers.
+    // Exact for every |v · inverse| < 2^63, far beyond the 2^52 the world allows.
+    const double q = v * inverse_;
+    const auto t = static_cast<std::int64_t>(q);
+    return static_cast<double>(t) > q ? t - 1 : t;
   }
   [[nodiscard]] Cell cellAt(Vec2 p) const { return {index(p.x), index(p.y)}; }
   /// World position of a cell's top-left corner.

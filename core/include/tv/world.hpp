@@ -142,6 +142,7 @@ class World {
   static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
 
   static constexpr std::size_t kCachedCells = 4;
+  static constexpr std::int64_t kDirectCells = 4;
 
   struct Slot {
     Rect rect;
@@ -180,8 +181,8 @@ class World {
                 MoveTrace* trace, Collision& best) const;
   /// Calls f(slot, const Rect&) once for each item registered in the cells the move visits.
   template <class F>
-  void forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, BroadPhase broad,
-                        MoveTrace* trace, F&& f) const;
+  void forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
+                        BroadPhase broad, MoveTrace* trace, F&& f) const;
   std::uint32_t nextEpoch() const;
 
   Grid grid_;
