@@ -367,7 +367,7 @@ namespace {
 // Collision order: overlaps (deepest first, ti is minus the area), then ti, then ordinary hits
 // before exact corner hits, then add order.
 template <class EarlierAdded>
-bool before(const Collision& a, const Collision& b, EarlierAdded aWasAddedFirst) {
+bool before(const Sweep& a, const Sweep& b, EarlierAdded aWasAddedFirst) {
   if (a.ti != b.ti) return a.ti < b.ti;
   if (a.corner != b.corner) return !a.corner;
   return aWasAddedFirst();
@@ -378,7 +378,12 @@ bool before(const Collision& a, const Collision& b, EarlierAdded aWasAddedFirst)
 bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
                      MoveTrace* trace, Collision& best) const {
   const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
+  // The leader so far, kept small: the Collision is filled once, for the winner.
   bool found = false;
+  Sweep lead;
+  ItemId leadId;
+  Rect leadRect;
+  ResponseId leadResponse = response::slide;
   // Only what meets the move's bounding box can be hit: four compares before the exact test.
   const Rect hull = unite(r, r.at(goal));
   forEachCandidate(self, r, goal, hull, broad, trace,
@@ -392,14 +397,10 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
                      }
                      const Sweep s = sweepRect(r, goal, otherRect);
                      if (s.kind == SweepKind::miss) return;
-                     Collision c;
-                     c.overlaps = s.kind == SweepKind::overlap;
-                     c.corner = s.corner;
-                     c.ti = s.ti;
                      // Add order breaks exact ties only, so the slots (a cache miss each) are read
                      // only then.
-                     if (found && !before(c, best, [&] {
-                           return slots_[other].order < slots_[best.other.index].order;
+                     if (found && !before(s, lead, [&] {
+                           return slots_[other].order < slots_[leadId.index].order;
                          })) {
                        return;
                      }
@@ -409,18 +410,25 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
                        fail(kMove, "filter returned response " + std::to_string(resp) +
                                        ", which is not registered");
                      }
-                     c.item = selfId;
-                     c.other = otherId;
-                     c.move = goal - r.position();
-                     c.normal = s.normal;
-                     c.touch = s.touch;
-                     c.itemRect = r;
-                     c.otherRect = otherRect;
-                     c.response = resp;
-                     best = c;
+                     lead = s;
+                     leadId = otherId;
+                     leadRect = otherRect;
+                     leadResponse = resp;
                      found = true;
                    });
-  return found;
+  if (!found) return false;
+  best.item = selfId;
+  best.other = leadId;
+  best.overlaps = lead.kind == SweepKind::overlap;
+  best.corner = lead.corner;
+  best.ti = lead.ti;
+  best.move = goal - r.position();
+  best.normal = lead.normal;
+  best.touch = lead.touch;
+  best.itemRect = r;
+  best.otherRect = leadRect;
+  best.response = leadResponse;
+  return true;
 }
 
 MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
@@ -434,13 +442,13 @@ MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filte
     trace->goal = goal;
   }
   Vec2 start = r.position();
+  Collision c;  // firstHit fills every field but target, for each leg
   for (int i = 0;; ++i) {
     if (i == o.maxResponses) {
       goal = start;  // out of responses: stay at the last contact, which is outside everything
       break;
     }
     if (trace) trace->legs.push_back({r.at(start), goal});
-    Collision c;
     if (!firstHit(self, r.at(start), goal, filter, o.broad, trace, c)) break;
     const Leg next = respond(c, goal);
     c.target = next.goal;
