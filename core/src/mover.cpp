@@ -28,6 +28,9 @@ constexpr std::string_view kWhere = "tv::Mover";
 
 // How many pieces a substep move needs, and guards against a piece count that cannot end.
 constexpr double kMaxPieces = 1 << 24;
+// The pixel mover makes one query per pixel: past this a move is refused, not ground through
+// (and past 2^53 a double step count would never reach zero).
+constexpr double kMaxPixels = 1 << 24;
 
 }  // namespace
 
@@ -98,13 +101,24 @@ MoveResult Mover::move(World& world, ItemId id, Vec2 goal, Filter filter, MoveTr
     trace->clear();
     trace->mover = name_;
   }
-  switch (spec_.kind) {
-    case MoverKind::discrete: return discrete(world, id, goal, filter, trace, collisions_);
-    case MoverKind::sweep: return world.move(id, goal, filter, {BroadPhase::bounds, trace});
-    case MoverKind::substep: return substep(world, id, goal, filter, trace);
-    case MoverKind::continuous: return world.move(id, goal, filter, {BroadPhase::swept, trace});
-    case MoverKind::pixel: return pixel(world, id, goal, filter, trace);
-    case MoverKind::adaptive: return adaptive(world, id, goal, filter, trace);
+  // Movers made of several world calls (substep pieces, pixel steps) can meet bad input part
+  // way, e.g. a filter answer that is not a response: put the item back, so a throw changes
+  // nothing.
+  const Rect start = world.rect(id);
+  const Remainder remainder = id.index < remainder_.size() ? remainder_[id.index] : Remainder{};
+  try {
+    switch (spec_.kind) {
+      case MoverKind::discrete: return discrete(world, id, goal, filter, trace, collisions_);
+      case MoverKind::sweep: return world.move(id, goal, filter, {BroadPhase::bounds, trace});
+      case MoverKind::substep: return substep(world, id, goal, filter, trace);
+      case MoverKind::continuous: return world.move(id, goal, filter, {BroadPhase::swept, trace});
+      case MoverKind::pixel: return pixel(world, id, goal, filter, trace);
+      case MoverKind::adaptive: return adaptive(world, id, goal, filter, trace);
+    }
+  } catch (...) {
+    world.update(id, start);
+    if (id.index < remainder_.size()) remainder_[id.index] = remainder;
+    throw;
   }
   return {};
 }
@@ -132,6 +146,7 @@ MoveResult Mover::discrete(World& world, ItemId id, Vec2 goal, Filter filter, Mo
     if (trace) trace->candidates.push_back(other);
     const ResponseId resp = filter(id, other);
     if (resp == response::ignore) continue;
+    (void)world.responseName(resp);  // throws on an answer that is not a registered response
     const Rect o = world.rect(other);
     const Sweep s = sweepRect(r, r.position(), o);
     if (s.kind != SweepKind::overlap) continue;  // an earlier push already cleared it
@@ -214,7 +229,15 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
                                 "} is too far from the origin for the world's cell size");
   }
   if (remainder_.size() <= id.index) remainder_.resize(id.index + 1);
-  Vec2& rem = remainder_[id.index];
+  // A remainder belongs to one item: a new item in a reused slot starts from zero.
+  if (remainder_[id.index].generation != id.generation) remainder_[id.index] = {{}, id.generation};
+  Vec2& rem = remainder_[id.index].rest;
+  for (const double pixels : {rem.x + (goal.x - start.x), rem.y + (goal.y - start.y)}) {
+    if (!(std::fabs(std::round(pixels)) <= kMaxPixels)) {
+      fail("tv::Mover::move", "pixel move of " + formatNumber(pixels) +
+                                  " px on one axis; the pixel mover takes at most 2^24 per move");
+    }
+  }
   collisions_.clear();
   if (trace) {
     trace->item = id;
@@ -230,6 +253,7 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
       if (trace) trace->candidates.push_back(other);
       const ResponseId resp = filter(id, other);
       if (resp == response::ignore) continue;
+      (void)world.responseName(resp);  // throws on an answer that is not a registered response
       Collision c;
       c.item = id;
       c.other = other;

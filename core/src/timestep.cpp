@@ -7,6 +7,10 @@
 
 namespace tv {
 
+namespace {
+constexpr double kMaxTicksPerFrame = 1 << 20;
+}  // namespace
+
 FixedStep::FixedStep(double step, double maxFrameTime) : step_(step), maxFrameTime_(maxFrameTime) {
   constexpr std::string_view where = "tv::FixedStep";
   requirePositive(where, "step", step);
@@ -14,6 +18,12 @@ FixedStep::FixedStep(double step, double maxFrameTime) : step_(step), maxFrameTi
   if (maxFrameTime < step) {
     fail(where, "maxFrameTime must be >= step (" + formatNumber(step) + "), but was " +
                     formatNumber(maxFrameTime));
+  }
+  // One frame may call for at most 2^20 ticks: beyond that a frame is a freeze, the tick count
+  // would overflow, and at extreme ratios accumulator - step no longer shrinks.
+  if (maxFrameTime / step > kMaxTicksPerFrame) {
+    fail(where, "maxFrameTime / step must be <= 2^20, but was " + formatNumber(maxFrameTime) +
+                    " / " + formatNumber(step));
   }
 }
 

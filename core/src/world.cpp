@@ -69,6 +69,13 @@ void World::validateRect(const Rect& r, std::string_view where) const {
     fail(where, "rect " + describe(r) + " is too far from the origin for cell size " +
                     formatNumber(grid_.cellSize()));
   }
+  // An item is registered in every cell it meets: refuse one that would fill memory.
+  const CellRange c = grid_.cellsOf(r);
+  const double cells = static_cast<double>(c.x1 - c.x0 + 1) * static_cast<double>(c.y1 - c.y0 + 1);
+  if (cells > kMaxItemCells) {
+    fail(where, "rect " + describe(r) + " spans " + formatNumber(cells) + " cells of size " +
+                    formatNumber(grid_.cellSize()) + "; at most 2^24 (choose a larger cell size)");
+  }
 }
 
 void World::validateGoal(const Rect& r, Vec2 goal, std::string_view where) const {
@@ -232,6 +239,9 @@ void World::syncBucket(std::uint32_t k) {
 }
 
 void World::insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r) {
+  used_ = used_.empty() ? r
+                        : CellRange{std::min(used_.x0, r.x0), std::min(used_.y0, r.y0),
+                                    std::max(used_.x1, r.x1), std::max(used_.y1, r.y1)};
   const std::uint32_t tag = slot | (r.count() > 1 ? Entry::kShared : 0u);
   const std::uint32_t generation = slots_[slot].generation;
   std::size_t n = 0;
@@ -354,9 +364,12 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
   };
   // A move whose bounding box spans a few cells visits them all: the swept walk would skip at
   // most one or two, for more arithmetic than those cells cost to scan.
-  const CellRange box = grid_.cellsOf(hull);
+  // Nothing lies outside the cells that ever held an item: both walks are clipped to them.
+  const CellRange all = grid_.cellsOf(hull);
+  const CellRange box{std::max(all.x0, used_.x0), std::max(all.y0, used_.y0),
+                      std::min(all.x1, used_.x1), std::min(all.y1, used_.y1)};
   if (broad == BroadPhase::swept && box.count() > kDirectCells) {
-    grid_.forEachSweptCell(r, goal, visit);
+    grid_.forEachSweptCell(r, goal, visit, used_);
   } else {
     Grid::forEachCell(box, visit);
   }
@@ -442,21 +455,34 @@ MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filte
     trace->goal = goal;
   }
   Vec2 start = r.position();
+  // The last leg start known to be outside everything the move did not start in: a contact
+  // placed from an obstacle's edge is; a push out of an overlap may land in a neighbour.
+  Vec2 safe = start;
   Collision c;  // firstHit fills every field but target, for each leg
   for (int i = 0;; ++i) {
     if (i == o.maxResponses) {
-      goal = start;  // out of responses: stay at the last contact, which is outside everything
+      goal = safe;  // out of responses (acute pockets, bouncing in a slot): stop where safe
       break;
     }
     if (trace) trace->legs.push_back({r.at(start), goal});
     if (!firstHit(self, r.at(start), goal, filter, o.broad, trace, c)) break;
     const Leg next = respond(c, goal);
+    // A response of the user's must hand back a leg the world can sweep: refuse it before
+    // anything moves, naming the response.
+    if (!isFinite(next.start) || !isFinite(next.goal) || !grid_.fits(r.at(next.start)) ||
+        !grid_.fits(r.at(next.goal))) [[unlikely]] {
+      fail(kMove, "response '" + std::string(responseName(c.response)) + "' returned the leg {" +
+                      formatNumber(next.start.x) + ", " + formatNumber(next.start.y) + "} -> {" +
+                      formatNumber(next.goal.x) + ", " + formatNumber(next.goal.y) +
+                      "}, which is not finite or too far from the origin");
+    }
     c.target = next.goal;
     collisions_.push_back(c);
     if (trace) trace->hits.push_back(c);
     if (next.passThrough) excluded_.push_back(c.other.index);
     start = next.start;
     goal = next.goal;
+    if (!c.overlaps) safe = start;
   }
   if (trace) trace->final = goal;
   return {goal, collisions_};
@@ -474,7 +500,7 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
   validateGoal(s.rect, goal, kMove);
   validateOptions(options, kMove);
   const MoveResult result = run(id.index, s.rect, goal, filter, options);
-  place(id.index, s.rect.at(result.position));  // validated with the goal: every leg ends inside
+  place(id.index, s.rect.at(result.position));  // every leg was checked as it was made
   return result;
 }
 

@@ -156,9 +156,13 @@ TEST(Adaptive, GivesExactlyWhatContinuousGives) {
 }
 
 TEST(Movers, ContinuousVisitsFarFewerCellsThanSweepOnALongDiagonal) {
-  // A 1900 px diagonal: the bounding box holds ~440 cells of 64; the path crosses ~60.
+  // A 1900 px diagonal: the bounding box holds ~440 cells of 64; the path crosses ~60. Two
+  // tiles off the path, at the box's other corners, put the whole box among used cells (the
+  // world skips cells that never held anything).
   World w(64);
   const ItemId b = w.add({0, 0, 8, 8});
+  (void)w.add({1400, 0, 16, 16});
+  (void)w.add({0, 1400, 16, 16});
   MoveTrace sweepTrace, exactTrace;
   Mover sweep(parseMover("sweep")), exact(parseMover("continuous"));
   (void)w.check(b, {1343, 1343}, {}, {BroadPhase::bounds, &sweepTrace});

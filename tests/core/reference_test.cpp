@@ -13,7 +13,8 @@
 //   out in the order up, left, right, down; ti = minus the intersection area, in double);
 // - slide: the next leg runs from the touch to the goal with the normal's coordinate replaced;
 //   after maxResponses responses the item stays at its last contact (with maxResponses 1 the
-//   result is the first touch itself, interpolated coordinate included).
+//   result is the first touch itself, interpolated coordinate included) — or, if the last
+//   response pushed it out of an overlap, at the last contact before that push (or its start).
 // Random scenes mix integer-aligned and dyadic rects (exact corners, touches and grazes occur
 // often) with general-position doubles.
 
@@ -212,9 +213,10 @@ struct RefMove {
 RefMove referenceMove(const std::vector<Rect>& obstacles, Vec2 size, Vec2 start, Vec2 goal,
                       int maxResponses) {
   RefMove m;
+  Vec2 safe = start;
   for (int i = 0;; ++i) {
     if (i == maxResponses) {
-      goal = start;
+      goal = safe;
       break;
     }
     const Rect a{start.x, start.y, size.x, size.y};
@@ -235,6 +237,7 @@ RefMove referenceMove(const std::vector<Rect>& obstacles, Vec2 size, Vec2 start,
     const Vec2 t = best->touch;
     goal = best->normal.x != 0.0 ? Vec2{t.x, goal.y} : Vec2{goal.x, t.y};
     start = t;
+    if (!best->overlap) safe = start;
   }
   m.position = goal;
   return m;

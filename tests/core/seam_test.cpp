@@ -47,7 +47,9 @@ struct Config {
 constexpr Config kConfigs[] = {
     {0.0, 1.0, "16 px tiles at offset 0"},          {1e6, 1.0, "16 px tiles at offset 1e6"},
     {1e9, 1.0, "16 px tiles at offset 1e9"},        {0.0, 1.0 / 16.0, "1 px tiles at offset 0"},
-    {0.0, 1.0 / 160.0, "0.1 px tiles at offset 0"},  //
+    {0.0, 1.0 / 160.0, "0.1 px tiles at offset 0"},  {1e6, 1.0 / 16.0, "1 px tiles at offset 1e6"},
+    {1e9, 1.0 / 16.0, "1 px tiles at offset 1e9"},  {1e6, 1.0 / 160.0, "0.1 px tiles at offset 1e6"},
+    {1e9, 1.0 / 160.0, "0.1 px tiles at offset 1e9"},
 };
 
 struct Walk {

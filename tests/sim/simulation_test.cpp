@@ -185,6 +185,25 @@ TEST(Snapshots, AfterAStepBackTheNextTickReplacesTheFuture) {
 
 // [SECTION] tracing -------------------------------------------------------------------------------
 
+// A tick whose moves throw part way — here dt = 1e300 makes the falling bodies' goals
+// infinite after gravity has been added to their velocities — is undone: same hash, same
+// velocities, same render interpolation, and the next good tick is the one it would have been.
+TEST(Snapshots, ATickThatThrowsChangesNothing) {
+  Simulation sim("rest-floor", "continuous");
+  sim.tick();
+  Simulation twin("rest-floor", "continuous");
+  twin.tick();
+  const std::uint64_t before = sim.stateHash();
+  const Vec2 velocity = sim.bodies()[0].velocity;
+  EXPECT_THROW(sim.tick(1e300), tv::Error);
+  EXPECT_EQ(sim.stateHash(), before);
+  EXPECT_EQ(sim.bodies()[0].velocity, velocity);
+  EXPECT_EQ(sim.ticks(), 1u);
+  sim.tick();
+  twin.tick();
+  EXPECT_EQ(sim.stateHash(), twin.stateHash());
+}
+
 TEST(Tracing, IsOffByDefaultAndNeverChangesResults) {
   for (const SceneDef& s : builtinScenes().all()) {
     for (const std::string_view m : moverNames()) {

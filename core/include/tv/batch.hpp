@@ -41,16 +41,20 @@ class Batch {
  private:
   struct Body {
     ItemId item;
-    Rect rect;      // at the current event time
-    Vec2 goal;      // where its remaining path ends at t = 1
+    Rect rect;  // at the current event time
+    Vec2 goal;  // where its remaining path ends at t = 1
     bool stopped = false;
     std::size_t first = 0, count = 0;  // its collisions, once gathered
   };
   std::vector<Body> bodies_;
-  std::vector<Collision> events_;      // raw, in time order, with the body index in `owner_`
+  std::vector<Collision> events_;  // raw, in time order, with the body index in `owner_`
   std::vector<std::size_t> owner_;
-  std::vector<Collision> collisions_;  // grouped by body
-  std::vector<std::uint64_t> crossed_; // (a, b) body-pair keys excluded after a cross
+  std::vector<Collision> collisions_;   // grouped by body
+  std::vector<std::uint64_t> crossed_;  // (a, b) body-pair keys excluded after a cross
+  std::vector<std::uint64_t> order_;    // each body's add order: the tie-break
+  std::vector<Rect> startRects_;        // where each body began, to undo a failed step
+  static constexpr std::uint32_t kNoBody = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> bodyBySlot_;  // world slot -> body, kNoBody for the rest
 };
 
 }  // namespace tv

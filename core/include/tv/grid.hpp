@@ -32,6 +32,10 @@ struct CellRange {
 /// Cell coordinates stay well inside int64 and exactly representable in a double.
 inline constexpr double kMaxCellIndex = 4503599627370496.0;  // 2^52
 
+/// Every cell a world can hold.
+inline constexpr CellRange kEveryCell{-(std::int64_t{1} << 53), -(std::int64_t{1} << 53),
+                                      std::int64_t{1} << 53, std::int64_t{1} << 53};
+
 class Grid {
  public:
   /// `cellSize` in world units, finite and > 0 (checked by the world).
@@ -71,9 +75,12 @@ class Grid {
   /// Calls f(Cell) for every cell that the rect meets while moving from `start` to `goal`
   /// (its swept hull), column by column along the dominant axis. The cost follows the cells
   /// the rect actually crosses, not the area of the move's bounding box. Conservative: a cell
-  /// the hull only nearly meets may be visited too.
+  /// the hull only nearly meets may be visited too. Cells outside `clip` are skipped (the world
+  /// passes the range that has ever held an item, so a long move through empty space costs
+  /// nothing for the emptiness).
   template <class F>
-  void forEachSweptCell(const Rect& start, Vec2 goal, F&& f) const;
+  void forEachSweptCell(const Rect& start, Vec2 goal, F&& f,
+                        const CellRange& clip = kEveryCell) const;
 
   /// Calls f(Cell) for every cell of the range, row by row.
   template <class F>
@@ -88,7 +95,7 @@ class Grid {
 };
 
 template <class F>
-void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f) const {
+void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f, const CellRange& clip) const {
   const Rect end = start.at(goal);
   const double dx = goal.x - start.x;
   const double dy = goal.y - start.y;
@@ -100,7 +107,9 @@ void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f) const {
   const double w0 = alongX ? end.y : end.x, w1 = alongX ? end.bottom() : end.right();
   const double du = e0 - u0;
   const double uMin = std::min(u0, e0), uMax = std::max(u1, e1);
-  const std::int64_t c0 = index(uMin), c1 = index(uMax);
+  const std::int64_t c0 = std::max(index(uMin), alongX ? clip.x0 : clip.y0);
+  const std::int64_t c1 = std::min(index(uMax), alongX ? clip.x1 : clip.y1);
+  const std::int64_t rMin = alongX ? clip.y0 : clip.x0, rMax = alongX ? clip.y1 : clip.x1;
   for (std::int64_t c = c0; c <= c1; ++c) {
     // The slice of the column the hull can occupy, then the times the rect spends in it.
     const double lo = std::max(uMin, static_cast<double>(c) * size_);
@@ -121,7 +130,7 @@ void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f) const {
     const double slack = scale * 0x1p-46;
     vLo = std::max(vLo - slack, std::min(v0, w0));
     vHi = std::min(vHi + slack, std::max(v1, w1));
-    const std::int64_t r0 = index(vLo), r1 = index(vHi);
+    const std::int64_t r0 = std::max(index(vLo), rMin), r1 = std::min(index(vHi), rMax);
     for (std::int64_t r = r0; r <= r1; ++r) f(alongX ? Cell{c, r} : Cell{r, c});
   }
 }

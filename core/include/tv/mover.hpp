@@ -34,7 +34,9 @@ enum class MoverKind : std::uint8_t {
   continuous,
   /// Integer steps with a sub-pixel remainder, one pixel at a time, each checked for overlap
   /// (Celeste/TowerFall style). Exact on integer scenes; cost grows linearly with speed (one
-  /// query per pixel), so it is the cost-per-pixel baseline, not a choice for bullets.
+  /// query per pixel), so it is the cost-per-pixel baseline, not a choice for bullets. Refuses
+  /// moves over 2^24 px on an axis. Never tunnels through bodies and obstacles at least 1 px
+  /// thick; a thinner one can fit between two consecutive pixel positions and be stepped over.
   pixel,
   /// A short move (below `safetyFraction` of the smallest extent of the mover and the world)
   /// first asks whether its hull is free — one rect query, as cheap as discrete — and teleports
@@ -93,7 +95,11 @@ class Mover {
   std::vector<Collision> collisions_;
   std::vector<Collision> pieceCollisions_;  // one substep piece's, before they join collisions_
   std::vector<ItemId> overlapping_;
-  std::vector<Vec2> remainder_;  // pixel: sub-pixel remainder per item slot
+  struct Remainder {
+    Vec2 rest;
+    std::uint32_t generation = 0;
+  };
+  std::vector<Remainder> remainder_;  // pixel: sub-pixel remainder per item slot
 };
 
 }  // namespace tv

@@ -13,7 +13,8 @@ class FixedStep {
  public:
   /// `step`: seconds per tick, finite and > 0 (default 1/60). `maxFrameTime`: longest frame
   /// counted, finite and >= step (default 0.25 s) — the spiral-of-death guard: a long hitch
-  /// costs at most maxFrameTime / step catch-up ticks instead of freezing the game.
+  /// costs at most maxFrameTime / step catch-up ticks instead of freezing the game. That ratio
+  /// must be at most 2^20.
   explicit FixedStep(double step = 1.0 / 60.0, double maxFrameTime = 0.25);
 
   /// Adds one rendered frame's duration (finite, >= 0) and returns how many ticks to run

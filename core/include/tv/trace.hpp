@@ -2,7 +2,8 @@
 /// What one move did, recorded by the move itself so that the debugger draws what the game
 /// got instead of recomputing it. Off unless a MoveTrace is passed; recording never changes
 /// results. When tv is built with TV_TRACE=OFF the pointer is ignored and the recording code
-/// is compiled out.
+/// is compiled out. `Mover::move` clears the trace first; `World::move`, `check` and `project`
+/// append to it (so a substep mover's pieces land in one record) — clear it between moves.
 
 #include <string_view>
 #include <vector>

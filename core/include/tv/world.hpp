@@ -64,7 +64,7 @@ class World {
   explicit World(double cellSize = 64.0);
 
   // -- items ---------------------------------------------------------------------------------
-  /// Adds a rect (finite, w > 0, h > 0) and returns its handle.
+  /// Adds a rect (finite, w > 0, h > 0, meeting at most 2^24 cells) and returns its handle.
   ItemId add(const Rect& r);
   void remove(ItemId id);
   /// Teleports (and may resize) an item; no collision is checked.
@@ -143,6 +143,7 @@ class World {
 
   static constexpr std::size_t kCachedCells = 4;
   static constexpr std::int64_t kDirectCells = 4;
+  static constexpr double kMaxItemCells = 16777216.0;  // 2^24 cells per item
 
   struct Slot {
     Rect rect;
@@ -220,6 +221,7 @@ class World {
   std::vector<std::vector<std::vector<Entry>>> spares_;  // [log2 capacity]: buffers to trade
   std::vector<std::size_t> buffers_;  // [log2 capacity]: buffers made, in cells or spare
   std::size_t occupiedCells_ = 0;
+  CellRange used_;  // every cell that ever held an item lies inside; empty at first
 
   struct NamedResponse {
     std::string name;

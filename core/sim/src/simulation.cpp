@@ -110,6 +110,7 @@ void Simulation::build(SceneSetup setup) {
   }
   previous_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
+  previousBefore_ = previous_;
   counters_ = {};
   tick_ = 0;
   ring_.clear();
@@ -176,6 +177,20 @@ void Simulation::syncWorld(std::size_t i) {
 }
 
 void Simulation::step(double dt) {
+  // A tick that throws part way (a move refusing a goal, a rule's bad write) is undone: the
+  // bodies, world and counters go back to this tick's snapshot and the interpolation's start
+  // to what it was, so a throw changes nothing.
+  std::swap(previous_, previousBefore_);
+  try {
+    stepOrThrow(dt);
+  } catch (...) {
+    restore(tick_);
+    std::swap(previous_, previousBefore_);
+    throw;
+  }
+}
+
+void Simulation::stepOrThrow(double dt) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
   traceValid_ = false;
   TickContext ctx = context(dt);

@@ -146,6 +146,7 @@ class Simulation {
 
   void build(SceneSetup setup);
   void step(double dt);
+  void stepOrThrow(double dt);
   void moveOneByOne(TickContext& ctx, double dt);
   void moveBatched(TickContext& ctx, double dt);
   void record();
@@ -175,6 +176,7 @@ class Simulation {
   Counters counters_;
   std::uint64_t tick_ = 0;
   std::vector<Vec2> previous_;
+  std::vector<Vec2> previousBefore_;  // previous_ as it was before the tick now running
 
   std::vector<Snapshot> ring_;
   std::uint64_t oldest_ = 0, newest_ = 0;
