@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "hot_paths.hpp"
 #include "tv/mover.hpp"
 #include "tv/sweep.hpp"
 #include "tv/world.hpp"
@@ -15,25 +16,7 @@ namespace {
 using tv::Rect;
 using tv::Vec2;
 
-// A 200x200 tile map (16 px tiles, ~30% solid) with room to move.
-struct TileMap {
-  tv::World world{32};
-  std::vector<Rect> free;
-  TileMap() {
-    std::mt19937_64 rng(1);
-    std::bernoulli_distribution solid(0.3);
-    for (int y = 0; y < 200; ++y) {
-      for (int x = 0; x < 200; ++x) {
-        const Rect r{x * 16.0, y * 16.0, 16, 16};
-        if (solid(rng)) {
-          world.add(r);
-        } else {
-          free.push_back({r.x + 4, r.y + 4, 8, 8});
-        }
-      }
-    }
-  }
-};
+using tv::bench::TileMap;
 
 void sweepHit(benchmark::State& state) {
   const Rect mover{0, 0, 8, 8}, wall{20, -4, 16, 16};
@@ -111,7 +94,8 @@ void longMove(benchmark::State& state) {
   // Scattered obstacles so cells are occupied but the path stays free.
   for (int k = 0; k < 4000; ++k) world.add({(k % 80) * 64.0 + 28, (k / 80) * 64.0 + 60, 8, 2});
   const tv::ItemId id = world.add({100, 100, 8, 8});
-  const Vec2 d = diagonal ? Vec2{length / std::sqrt(2.0), length / std::sqrt(2.0)} : Vec2{length, 0};
+  const Vec2 d =
+      diagonal ? Vec2{length / std::sqrt(2.0), length / std::sqrt(2.0)} : Vec2{length, 0};
   for (auto _ : state) {
     benchmark::DoNotOptimize(
         world.check(id, Vec2{100, 100} + d, tv::Filter::all(tv::response::ignore), {broad})
@@ -119,6 +103,22 @@ void longMove(benchmark::State& state) {
   }
 }
 BENCHMARK(longMove)->ArgsProduct({{64, 240, 960, 1900}, {0, 1}, {0, 1}});
+
+// The same through a corridor cut in a tile map: the scale study's cost-against-length case.
+void corridorMove(benchmark::State& state) {
+  const double length = static_cast<double>(state.range(0));
+  const bool diagonal = state.range(1) != 0;
+  const tv::BroadPhase broad = state.range(2) != 0 ? tv::BroadPhase::swept : tv::BroadPhase::bounds;
+  state.SetLabel(std::string(diagonal ? "diagonal " : "horizontal ") +
+                 (broad == tv::BroadPhase::swept ? "continuous" : "sweep"));
+  const Vec2 d =
+      diagonal ? Vec2{length / std::sqrt(2.0), length / std::sqrt(2.0)} : Vec2{length, 0};
+  const tv::bench::Corridor c({404, 404}, d);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(c.map.world.check(c.mover, c.goal, {}, {broad}).position);
+  }
+}
+BENCHMARK(corridorMove)->ArgsProduct({{64, 240, 960, 1900}, {0, 1}, {0, 1}});
 
 }  // namespace
 

@@ -1,0 +1,421 @@
+// scale: what a tick costs as the crowd grows, what one move costs against its length, how far
+// a move is from its own lower bound, and adaptive against discrete where nothing moves fast.
+//
+// Index: [SECTION] the crowd driver · [SECTION] crowd table · [SECTION] move length ·
+//        [SECTION] lower bound · [SECTION] slow scenes · [SECTION] the study
+#include <malloc.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "hot_paths.hpp"
+#include "report.hpp"
+#include "studies.hpp"
+#include "tv/error.hpp"
+#include "tv/mover.hpp"
+#include "tv/sim/body.hpp"
+#include "tv/sim/scene.hpp"
+#include "tv/sim/simulation.hpp"
+#include "tv/sweep.hpp"
+#include "tv/trace.hpp"
+
+namespace tv::bench {
+namespace {
+
+// [SECTION] the crowd driver ----------------------------------------------------------------------
+//
+// The crowd scene's own data (tv::sim builds it), moved the way tv::sim::Simulation moves it —
+// the same filter (mask against layer, the body's response) and the same velocity response —
+// but without the scene's checking rules (an extra overlap query per move, to count overlaps)
+// and without the snapshot ring, so the figure is what the moves cost. The Simulation's own
+// tick is timed beside it.
+
+std::size_t heapInUse() {
+  const struct mallinfo2 m = mallinfo2();
+  return m.uordblks + m.hblkhd;  // small chunks + mmapped large ones
+}
+
+class CrowdRun {
+ public:
+  CrowdRun(std::int64_t count, std::uint64_t seed, MoverSpec mover, double speed = 120.0)
+      : mover_(mover) {
+    const sim::SceneDef& scene = sim::findScene("crowd");
+    sim::Params p = scene.defaults();
+    p.set(sim::param::count, static_cast<double>(count));
+    p.set(sim::param::seed, static_cast<double>(seed % 1000000));
+    p.set(sim::param::speed, speed);
+    dt_ = p.get(sim::param::dt);
+    sim::SceneSetup s = scene.build(p);
+    const std::size_t heap0 = heapInUse();
+    world_ = World(s.cellSize);
+    for (const sim::Solid& solid : s.solids) {
+      const ItemId id = world_.add(solid.rect);
+      grow(id);
+    }
+    bodies_ = std::move(s.bodies);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      bodies_[i].item = world_.add(bodies_[i].rect);
+      grow(bodies_[i].item);
+      bodyBySlot_[bodies_[i].item.index] = static_cast<std::int32_t>(i);
+    }
+    items_ = s.solids.size() + bodies_.size();
+    worldBytes_ = heapInUse() - heap0;
+  }
+
+  void tick(MoveTrace* trace = nullptr) {
+    const auto filter = [this](ItemId item, ItemId other) {
+      const sim::Body& b = bodies_[static_cast<std::size_t>(bodyBySlot_[item.index])];
+      const std::int32_t o = bodyBySlot_[other.index];
+      const std::uint32_t layer =
+          o < 0 ? sim::kLayerSolid : bodies_[static_cast<std::size_t>(o)].layer;
+      return (b.mask & layer) != 0 ? b.response : response::ignore;
+    };
+    for (sim::Body& b : bodies_) {
+      const Vec2 goal = b.rect.position() + b.velocity * dt_;
+      const MoveResult r = mover_.move(world_, b.item, goal, filter, trace);
+      b.rect = b.rect.at(r.position);
+      b.velocity = sim::respondVelocity(b.velocity, r.collisions);
+      if (trace) {
+        cells_ += trace->cells.size();
+        candidates_ += trace->candidates.size();
+        ++traced_;
+      }
+    }
+  }
+
+  [[nodiscard]] std::size_t bodies() const { return bodies_.size(); }
+  [[nodiscard]] std::size_t items() const { return items_; }
+  [[nodiscard]] double bytesPerItem() const {
+    return static_cast<double>(worldBytes_) / static_cast<double>(items_);
+  }
+  [[nodiscard]] double cellsPerMove() const { return ratio(cells_); }
+  [[nodiscard]] double candidatesPerMove() const { return ratio(candidates_); }
+
+ private:
+  void grow(ItemId id) {
+    if (id.index >= bodyBySlot_.size()) bodyBySlot_.resize(id.index + 1, -1);
+  }
+  [[nodiscard]] double ratio(std::uint64_t n) const {
+    return traced_ ? static_cast<double>(n) / static_cast<double>(traced_) : 0.0;
+  }
+
+  Mover mover_;
+  double dt_ = 1.0 / 60.0;
+  World world_;
+  std::vector<sim::Body> bodies_;
+  std::vector<std::int32_t> bodyBySlot_;
+  std::size_t items_ = 0, worldBytes_ = 0;
+  std::uint64_t cells_ = 0, candidates_ = 0, traced_ = 0;
+};
+
+/// Best of `repeats` timings of `ticks` ticks, in ms per tick.
+template <class Tick>
+double msPerTick(Tick&& tick, std::uint64_t ticks, int repeats) {
+  double best = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    Stopwatch sw;
+    for (std::uint64_t t = 0; t < ticks; ++t) tick();
+    best = std::min(best, sw.seconds() * 1e3 / static_cast<double>(ticks));
+  }
+  return best;
+}
+
+// [SECTION] crowd table ---------------------------------------------------------------------------
+
+struct CrowdRow {
+  std::int64_t n;
+  std::string mover;
+  double ms, simMs, cells, candidates, bytes;
+};
+
+CrowdRow crowdRow(std::int64_t n, const std::string& mover, std::uint64_t seed, std::uint64_t ticks,
+                  int repeats) {
+  CrowdRun run(n, seed, parseMover(mover));
+  for (int t = 0; t < 3; ++t) run.tick();  // warm: cells and buffers reach their steady sizes
+  CrowdRow row{n, mover, 0, 0, 0, 0, run.bytesPerItem()};
+  row.ms = msPerTick([&] { run.tick(); }, ticks, repeats);
+  if constexpr (kTraceCompiledIn) {
+    MoveTrace trace;
+    run.tick(&trace);
+    row.cells = run.cellsPerMove();
+    row.candidates = run.candidatesPerMove();
+  }
+  const sim::SceneDef& scene = sim::findScene("crowd");
+  sim::Params p = scene.defaults();
+  p.set(sim::param::count, static_cast<double>(n));
+  p.set(sim::param::seed, static_cast<double>(seed % 1000000));
+  sim::SimConfig config;
+  config.snapshotCapacity = 1;
+  sim::Simulation s(scene, p, parseMover(mover), config);
+  for (int t = 0; t < 3; ++t) s.tick();
+  row.simMs = msPerTick([&] { s.tick(); }, std::max<std::uint64_t>(ticks / 2, 3), 1);
+  return row;
+}
+
+// [SECTION] move length ---------------------------------------------------------------------------
+
+struct LengthRow {
+  double length;
+  bool diagonal;
+  double sweepNs, continuousNs, sweepCandidates, continuousCandidates;
+};
+
+double nsPerCheck(const Corridor& c, BroadPhase broad, std::uint64_t reps) {
+  double best = 1e300;
+  for (int r = 0; r < 3; ++r) {
+    Stopwatch sw;
+    for (std::uint64_t i = 0; i < reps; ++i)
+      keep(c.map.world.check(c.mover, c.goal, {}, {broad}).position);
+    best = std::min(best, sw.seconds() * 1e9 / static_cast<double>(reps));
+  }
+  return best;
+}
+
+double candidatesOf(const Corridor& c, BroadPhase broad) {
+  if constexpr (!kTraceCompiledIn) return 0.0;
+  MoveTrace t;
+  (void)c.map.world.check(c.mover, c.goal, {}, {broad, &t});
+  return static_cast<double>(t.candidates.size());
+}
+
+LengthRow lengthRow(double length, bool diagonal, std::uint64_t reps) {
+  const double a = length / std::sqrt(2.0);
+  const Corridor c({404, 404}, diagonal ? Vec2{a, a} : Vec2{length, 0});
+  return {length,
+          diagonal,
+          nsPerCheck(c, BroadPhase::bounds, reps),
+          nsPerCheck(c, BroadPhase::swept, reps),
+          candidatesOf(c, BroadPhase::bounds),
+          candidatesOf(c, BroadPhase::swept)};
+}
+
+// [SECTION] lower bound ---------------------------------------------------------------------------
+//
+// One move's floor: the cells its broad phase must read, each at the cost of one cell probe,
+// plus the candidates it must test, each at the cost of one exact pair test. Both kernels are
+// timed here the way tv-microbench times them (sweepMiss, freeSpotCheck).
+
+struct Kernels {
+  double pairNs = 0, probeNs = 0;
+};
+
+Kernels kernels(std::uint64_t reps) {
+  Kernels k;
+  const Rect mover{0, 0, 8, 8}, wall{20, 40, 16, 16};
+  Vec2 goal{30, 3};
+  double best = 1e300;
+  for (int r = 0; r < 3; ++r) {
+    Stopwatch sw;
+    for (std::uint64_t i = 0; i < reps; ++i) {
+      keep(goal);
+      keep(sweepRect(mover, goal, wall).ti);
+    }
+    best = std::min(best, sw.seconds() * 1e9 / static_cast<double>(reps));
+  }
+  k.pairNs = best;
+  // A free 8×8 spot inside one tile of a 32 px cell grid: one or more cell probes (an 8×8 rect
+  // centred in a 16 px tile meets one cell, or two or four where tiles straddle cell lines).
+  TileMap map(200);
+  std::vector<Rect> spots;
+  for (const Rect& r : map.free) {
+    if (map.world.grid().cellsOf(r).count() == 1) spots.push_back(r);
+  }
+  best = 1e300;
+  for (int r = 0; r < 3; ++r) {
+    Stopwatch sw;
+    for (std::uint64_t i = 0; i < reps; ++i) keep(map.world.anyOverlap(spots[i % spots.size()]));
+    best = std::min(best, sw.seconds() * 1e9 / static_cast<double>(reps));
+  }
+  k.probeNs = best;
+  return k;
+}
+
+// [SECTION] slow scenes ---------------------------------------------------------------------------
+
+struct SlowScene {
+  std::string label;
+  std::string scene;
+  std::int64_t count;
+  double speed;  // 0: the scene's default
+};
+
+double simMsPerTick(const SlowScene& s, const std::string& mover, std::uint64_t seed,
+                    std::uint64_t ticks, int repeats) {
+  const sim::SceneDef& scene = sim::findScene(s.scene);
+  sim::Params p = scene.defaults();
+  p.set(sim::param::count, static_cast<double>(s.count));
+  p.set(sim::param::seed, static_cast<double>(seed % 1000000));
+  if (s.speed > 0) p.set(sim::param::speed, s.speed);
+  sim::SimConfig config;
+  config.snapshotCapacity = 1;
+  sim::Simulation sim(scene, p, parseMover(mover), config);
+  for (int t = 0; t < 30; ++t) sim.tick();  // past the landing: bodies at rest
+  return msPerTick([&] { sim.tick(); }, ticks, repeats);
+}
+
+}  // namespace
+
+// [SECTION] the study -----------------------------------------------------------------------------
+
+int runScale(const Options& o) {
+  const std::vector<double> countsD =
+      o.numbers("counts", o.pick<std::vector<double>>({100, 1000}, {100, 1000, 10000, 100000},
+                                                      {100, 1000, 10000, 100000}));
+  std::vector<std::int64_t> counts;
+  for (const double c : countsD) {
+    if (!(c >= 1 && c <= 100000 && c == std::floor(c))) {
+      throw UsageError{"--counts: " + sig3(c) + " is not a whole number in [1, 100000]"};
+    }
+    counts.push_back(static_cast<std::int64_t>(c));
+  }
+  const std::vector<std::string> movers = o.names("movers", {"sweep", "continuous", "adaptive"});
+  for (const std::string& m : movers) {
+    try {
+      (void)parseMover(m);
+    } catch (const Error& e) {
+      throw UsageError{"--movers " + m + ": " + e.what()};
+    }
+  }
+  const bool crowdOnly = o.has("crowd-only");
+  const int repeats = o.pick(1, 3, 5);
+  const auto ticksFor = [&](std::int64_t n) -> std::uint64_t {
+    if (o.has("ticks")) return std::max<std::uint64_t>(1, parseCount("ticks", o.extra.at("ticks")));
+    const double budget = o.pick(2e4, 2e5, 2e6);  // moves per repeat
+    return static_cast<std::uint64_t>(std::clamp(budget / static_cast<double>(n), 3.0, 2000.0));
+  };
+
+  std::ostream& os = std::cout;
+  printHeading(os, "scale: cost against crowd size and move length", modeName(o.mode), o.seed,
+               o.out);
+  os << "Single thread. Tracing compiled " << (kTraceCompiledIn ? "in (and off)" : "out")
+     << ". Times are the best of " << repeats << " repeat(s).\n\n";
+
+  // -- crowd
+  os << "### crowd: 8×8 movers among 16×16 tiles (~30% solid, world grown with N), 120 px/s\n\n"
+     << "**ms/tick** moves every body once the way tv::sim::Simulation does (same filter and "
+        "velocity response) without the scene's checking rules or the snapshot ring; **sim "
+        "ms/tick** is tv::sim::Simulation::tick itself, whose crowd rules add one overlap query "
+        "per move (to count overlaps) and which records a snapshot. Cells and candidates per "
+        "move come from a traced tick; bytes per item is the world's heap over its items "
+        "(tiles + movers).\n\n";
+  Table crowd({"N:", "mover", "ms/tick:", "moves/s:", "ns/move:", "sim ms/tick:", "cells/move:",
+               "candidates/move:", "bytes/item:"});
+  Progress progress("scale", counts.size() * movers.size() + (crowdOnly ? 0 : 14));
+  std::vector<CrowdRow> rows;
+  for (const std::int64_t n : counts) {
+    for (const std::string& m : movers) {
+      const CrowdRow r = crowdRow(n, m, o.seed, ticksFor(n), repeats);
+      rows.push_back(r);
+      const double moves = static_cast<double>(n);
+      crowd.add({std::to_string(n), m, fixed(r.ms, 3), sig3(moves / (r.ms * 1e-3)),
+                 fixed(r.ms * 1e6 / moves, 0), fixed(r.simMs, 3),
+                 kTraceCompiledIn ? fixed(r.cells, 2) : "n/a",
+                 kTraceCompiledIn ? fixed(r.candidates, 2) : "n/a", fixed(r.bytes, 0)});
+      progress.step("crowd " + std::to_string(n) + " " + m);
+    }
+  }
+  crowd.printMarkdown(os);
+  crowd.writeCsv(o.out, "scale_crowd.csv");
+  for (const CrowdRow& r : rows) {
+    if (r.n == 10000 && r.mover == "continuous") {
+      os << "Target: crowd of 10^4 with continuous ≤ 1 ms/tick (stretch 0.3 ms): measured "
+         << fixed(r.ms, 3) << " ms/tick ("
+         << (r.ms <= 0.3   ? "meets the stretch goal"
+             : r.ms <= 1.0 ? "met; stretch missed by " + fixed(r.ms / 0.3, 2) + "×"
+                           : "MISSED by " + fixed(r.ms / 1.0, 2) + "×")
+         << "); the full Simulation tick " << fixed(r.simMs, 3) << " ms.\n\n";
+    }
+  }
+  if (crowdOnly) return 0;
+
+  // -- move length
+  os << "### one move against its length\n\n"
+     << "An 8×8 mover in a 256×256 tile map (16 px tiles, ~30% solid, 32 px cells) through a "
+        "corridor cut exactly along its path, so the move runs its whole length with solid tiles "
+        "beside it (candidates, never hit). `sweep` reads every cell of the move's bounding box; "
+        "`continuous` only the cells the rect crosses. `adaptive` is continuous for any move "
+        "longer than a quarter of the smallest extent (2 px here), so it is not listed.\n\n";
+  Table length({"px:", "direction",
+                "sweep ns:", "continuous ns:", "sweep candidates:", "continuous candidates:"});
+  const std::uint64_t reps = o.pick<std::uint64_t>(2000, 20000, 100000);
+  std::vector<LengthRow> lengths;
+  for (const double len : {64.0, 240.0, 960.0, 1900.0}) {
+    for (const bool diag : {false, true}) {
+      const LengthRow r = lengthRow(
+          len, diag, std::max<std::uint64_t>(reps / static_cast<std::uint64_t>(len / 32 + 1), 50));
+      lengths.push_back(r);
+      length.add({fixed(len, 0), diag ? "diagonal" : "horizontal", fixed(r.sweepNs, 0),
+                  fixed(r.continuousNs, 0), kTraceCompiledIn ? fixed(r.sweepCandidates, 0) : "n/a",
+                  kTraceCompiledIn ? fixed(r.continuousCandidates, 0) : "n/a"});
+      progress.step("length " + fixed(len, 0));
+    }
+  }
+  length.printMarkdown(os);
+  length.writeCsv(o.out, "scale_length.csv");
+  const LengthRow& h = lengths[6];
+  const LengthRow& d = lengths[7];
+  os << "Target: a 1900 px diagonal move ≤ 4× a 1900 px horizontal one (bump.lua: 12×): "
+     << "continuous " << fixed(d.continuousNs / h.continuousNs, 2) << "× ("
+     << (d.continuousNs / h.continuousNs <= 4 ? "met" : "MISSED") << "), sweep "
+     << fixed(d.sweepNs / h.sweepNs, 2) << "× (the bounding-box broad phase, for comparison).\n\n";
+
+  // -- lower bound
+  const Kernels k = kernels(o.pick<std::uint64_t>(200000, 2000000, 10000000));
+  progress.step("kernels");
+  os << "### how far one move is from its lower bound\n\n"
+     << "Kernels (as in tv-microbench): one exact pair test (sweepRect, a miss) "
+     << fixed(k.pairNs, 1) << " ns; one free-spot probe of a single cell (anyOverlap) "
+     << fixed(k.probeNs, 1)
+     << " ns. A move's floor = cells/move × probe + candidates/move × pair test.\n\n";
+  Table bound(
+      {"case", "measured ns/move:", "cells:", "candidates:", "floor ns:", "measured / floor:"});
+  for (const CrowdRow& r : rows) {
+    if (r.mover != "continuous" || !kTraceCompiledIn) continue;
+    const double ns = r.ms * 1e6 / static_cast<double>(r.n);
+    const double floor = r.cells * k.probeNs + r.candidates * k.pairNs;
+    bound.add({"crowd N=" + std::to_string(r.n) + " continuous", fixed(ns, 0), fixed(r.cells, 2),
+               fixed(r.candidates, 2), fixed(floor, 0), fixed(ns / floor, 2) + "×"});
+  }
+  for (const LengthRow* r : {&h, &d}) {
+    if (!kTraceCompiledIn) break;
+    // The corridor's cells are not counted by the check itself; the candidates dominate.
+    const double floor = r->continuousCandidates * k.pairNs;
+    bound.add({"1900 px " + std::string(r->diagonal ? "diagonal" : "horizontal") +
+                   " continuous (candidates only)",
+               fixed(r->continuousNs, 0), "", fixed(r->continuousCandidates, 0), fixed(floor, 0),
+               fixed(r->continuousNs / floor, 2) + "×"});
+  }
+  bound.printMarkdown(os);
+  bound.writeCsv(o.out, "scale_lower_bound.csv");
+
+  // -- slow scenes
+  os << "### adaptive against discrete where nothing moves fast\n\n"
+     << "Whole tv::sim::Simulation ticks (rules and snapshot included, the same for every "
+        "mover). Target: adaptive within 10% of discrete.\n\n";
+  const std::int64_t slowN = o.pick<std::int64_t>(500, 5000, 10000);
+  const std::vector<SlowScene> slow = {
+      {"crowd, 60 px/s (1 px a tick)", "crowd", slowN, 60},
+      {"crowd, 120 px/s (2 px a tick)", "crowd", slowN, 120},
+      {"rest-floor (bodies resting on a floor under gravity)", "rest-floor", slowN, 0},
+      {"seam-walk (walking on a floor of tiles, 240 px/s)", "seam-walk", slowN, 0},
+  };
+  Table slowTable(
+      {"scene", "N:", "discrete ms:", "adaptive ms:", "continuous ms:", "adaptive / discrete:"});
+  const std::uint64_t slowTicks = o.pick<std::uint64_t>(10, 60, 300);
+  for (const SlowScene& s : slow) {
+    const double dis = simMsPerTick(s, "discrete", o.seed, slowTicks, repeats);
+    const double ada = simMsPerTick(s, "adaptive", o.seed, slowTicks, repeats);
+    const double con = simMsPerTick(s, "continuous", o.seed, slowTicks, repeats);
+    slowTable.add({s.label, std::to_string(s.count), fixed(dis, 3), fixed(ada, 3), fixed(con, 3),
+                   fixed(ada / dis, 2) + "×" + (ada / dis <= 1.10 ? "" : " (missed)")});
+    progress.step("slow " + s.scene);
+  }
+  slowTable.printMarkdown(os);
+  slowTable.writeCsv(o.out, "scale_slow_scenes.csv");
+  return 0;
+}
+
+}  // namespace tv::bench
