@@ -59,4 +59,13 @@ while IFS= read -r line; do
   } >> "$readme"
   count=$((count + 1))
 done < "$list"
+# The debugger's own screenshots have their page (app/viewer/regenerate_screenshots.sh).
+if [[ -f "$root/screenshots/DEBUGGER.md" ]]; then
+  {
+    echo
+    echo "## The debugger"
+    echo
+    echo "Screenshots of the interactive debugger, tv-debugger: [DEBUGGER.md](DEBUGGER.md)."
+  } >> "$readme"
+fi
 echo "regenerate_goldens.sh: rendered $count images into screenshots/"

@@ -86,35 +86,40 @@ std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerS
 }
 
 Actions debuggerLayout(Session& session, DebuggerState& st, ImVec2 display) {
+  return debuggerLayout(session, st, {0, 0}, display);
+}
+
+Actions debuggerLayout(Session& session, DebuggerState& st, ImVec2 origin, ImVec2 display) {
   // The column keeps the inspector's hit table readable; the world gets the rest.
   const float side = std::clamp(display.x * 0.35f, 340.0f, 480.0f);
   const float worldW = display.x - side;
+  const float x0 = origin.x, y0 = origin.y;
   Actions a;
 
-  if (beginCanvas("World", {0, 0}, {worldW, display.y})) {
+  if (beginCanvas("World", {x0, y0}, {worldW, display.y})) {
     if (auto pick = worldView("##world", session, st, {worldW, display.y})) a.select = pick;
   }
   ImGui::End();
 
   ImGui::SetNextWindowBgAlpha(0.82f);
-  ImGui::SetNextWindowPos({kMargin, kMargin}, ImGuiCond_Always);
+  ImGui::SetNextWindowPos({x0 + kMargin, y0 + kMargin}, ImGuiCond_Always);
   if (ImGui::Begin("HUD", nullptr, kOverlay | ImGuiWindowFlags_AlwaysAutoResize)) {
     hudContents(session, st);
-    st.coveredTop = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() + kMargin;
+    st.coveredTop = ImGui::GetWindowPos().y - y0 + ImGui::GetWindowHeight() + kMargin;
   }
   ImGui::End();
 
   ImGui::SetNextWindowBgAlpha(0.82f);
-  ImGui::SetNextWindowPos({kMargin, display.y - kMargin}, ImGuiCond_Always, {0, 1});
+  ImGui::SetNextWindowPos({x0 + kMargin, y0 + display.y - kMargin}, ImGuiCond_Always, {0, 1});
   ImGui::SetNextWindowSize({worldW - 2 * kMargin, 0}, ImGuiCond_Always);
   if (ImGui::Begin("Legend", nullptr, kOverlay)) {
     legendContents(4);
-    st.coveredBottom = display.y - ImGui::GetWindowPos().y + kMargin;
+    st.coveredBottom = y0 + display.y - ImGui::GetWindowPos().y + kMargin;
   }
   ImGui::End();
 
   float y = 0.0f;
-  ImGui::SetNextWindowPos({worldW, y}, ImGuiCond_Always);
+  ImGui::SetNextWindowPos({x0 + worldW, y0 + y}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({side, 0}, ImGuiCond_Always);
   if (ImGui::Begin("Scene and mover", nullptr, kFixed)) {
     const Actions c = controlsContents(session, st);
@@ -127,7 +132,7 @@ Actions debuggerLayout(Session& session, DebuggerState& st, ImVec2 display) {
   }
   ImGui::End();
 
-  ImGui::SetNextWindowPos({worldW, y}, ImGuiCond_Always);
+  ImGui::SetNextWindowPos({x0 + worldW, y0 + y}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({side, 0}, ImGuiCond_Always);
   if (ImGui::Begin("Counters", nullptr, kFixed)) {
     countersContents(session);
@@ -135,7 +140,7 @@ Actions debuggerLayout(Session& session, DebuggerState& st, ImVec2 display) {
   }
   ImGui::End();
 
-  place({worldW, y}, {side, std::max(display.y - y, 60.0f)});
+  place({x0 + worldW, y0 + y}, {side, std::max(display.y - y, 60.0f)});
   if (ImGui::Begin("Inspector", nullptr, kFixed)) inspectorContents(session);
   ImGui::End();
   return a;
@@ -143,10 +148,18 @@ Actions debuggerLayout(Session& session, DebuggerState& st, ImVec2 display) {
 
 void comparisonLayout(std::span<Session* const> sessions, std::span<DebuggerState> states,
                       const std::string& title, ImVec2 display) {
-  const std::size_t n = std::min(sessions.size(), states.size());
-  if (n == 0) return;
+  (void)comparisonLayout(sessions, states, title, {0, 0}, display);
+}
 
-  ImGui::SetNextWindowPos({0, 0}, ImGuiCond_Always);
+std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
+                                          std::span<DebuggerState> states, const std::string& title,
+                                          ImVec2 origin, ImVec2 display, int legendColumns) {
+  const std::size_t n = std::min(sessions.size(), states.size());
+  if (n == 0) return std::nullopt;
+  const float x0 = origin.x, y0 = origin.y;
+  std::optional<PanelPick> picked;
+
+  ImGui::SetNextWindowPos({x0, y0}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
   float top = 0.0f;
   if (ImGui::Begin("Title", nullptr, kOverlay)) {
@@ -155,11 +168,11 @@ void comparisonLayout(std::span<Session* const> sessions, std::span<DebuggerStat
   }
   ImGui::End();
 
-  ImGui::SetNextWindowPos({0, display.y}, ImGuiCond_Always, {0, 1});
+  ImGui::SetNextWindowPos({x0, y0 + display.y}, ImGuiCond_Always, {0, 1});
   ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
   float bottom = 0.0f;
   if (ImGui::Begin("Legend", nullptr, kOverlay)) {
-    legendContents(8);
+    legendContents(legendColumns);
     bottom = ImGui::GetWindowHeight();
   }
   ImGui::End();
@@ -170,12 +183,14 @@ void comparisonLayout(std::span<Session* const> sessions, std::span<DebuggerStat
     Session& s = *sessions[k];
     DebuggerState& st = states[k];
     const std::string name = s.sim().moverSpec().name();
-    place({w * static_cast<float>(k), top}, {w, h});
+    place({x0 + w * static_cast<float>(k), y0 + top}, {w, h});
     if (ImGui::Begin(name.c_str(), nullptr, kFixed | ImGuiWindowFlags_NoScrollbar)) {
       // Three lines of numbers under the picture: the verdict, the traced move, the cost.
       const float stats = ImGui::GetTextLineHeightWithSpacing() * 3.0f + 4.0f;
       const ImVec2 avail = ImGui::GetContentRegionAvail();
-      (void)worldView("##world", s, st, {avail.x, std::max(avail.y - stats, 40.0f)});
+      if (auto pick = worldView("##world", s, st, {avail.x, std::max(avail.y - stats, 40.0f)})) {
+        picked = PanelPick{k, *pick};
+      }
       const sim::Counters& c = s.sim().counters();
       const std::size_t bodies = s.sim().bodies().size();
       ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.tunnelled ? pal::kBad : pal::kGood),
@@ -208,6 +223,7 @@ void comparisonLayout(std::span<Session* const> sessions, std::span<DebuggerStat
     }
     ImGui::End();
   }
+  return picked;
 }
 
 }  // namespace tv::ui

@@ -22,10 +22,23 @@ std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerS
 
 /// The whole debugger filling `display`.
 Actions debuggerLayout(Session& session, DebuggerState& state, ImVec2 display);
+/// The same in the screen rect at `origin` of size `size` (e.g. under a menu bar).
+Actions debuggerLayout(Session& session, DebuggerState& state, ImVec2 origin, ImVec2 size);
 
 /// One panel per session, left to right, filling `display`; `title` heads the picture.
 /// `states` pairs with `sessions`.
 void comparisonLayout(std::span<Session* const> sessions, std::span<DebuggerState> states,
                       const std::string& title, ImVec2 display);
+
+/// A body clicked in one panel of the comparison.
+struct PanelPick {
+  std::size_t panel = 0;
+  std::size_t body = 0;
+};
+/// The same in the screen rect at `origin` of size `size`, the legend in `legendColumns`
+/// columns; returns the body clicked, if any.
+std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
+                                          std::span<DebuggerState> states, const std::string& title,
+                                          ImVec2 origin, ImVec2 size, int legendColumns = 8);
 
 }  // namespace tv::ui

@@ -52,6 +52,16 @@ inline constexpr ImU32 kBad = IM_COL32(255, 90, 90, 255);
 inline constexpr ImU32 kGood = IM_COL32(110, 230, 110, 255);
 inline constexpr ImU32 kDim = IM_COL32(150, 155, 165, 255);
 
+// -- comparisons -----------------------------------------------------------------------------
+/// The movers of a comparison drawn in one view: the first keeps the usual colours, the others
+/// are outlined in these, in order (cycling).
+inline constexpr ImU32 kCompareTints[] = {
+    IM_COL32(255, 150, 50, 255),   // orange
+    IM_COL32(200, 120, 255, 255),  // violet
+    IM_COL32(255, 90, 160, 255),   // pink
+    IM_COL32(120, 200, 255, 255),  // sky
+};
+
 /// Fill of an occupied cell holding `count` items: deeper with the count, saturating at 8 so
 /// that one item is visible and a crowded cell still leaves its contents readable.
 [[nodiscard]] ImU32 occupiedFill(std::size_t count);

@@ -1,0 +1,47 @@
+#pragma once
+/// The command line that names a picture: scene, mover or movers, tick, size, traced body,
+/// view, render rate, overlays and scene parameters. tv-render and tv-debugger's screenshot mode
+/// read the same flags, so one command line gives the same picture from either. Parsing only
+/// checks the form of each flag; names (scene, mover, parameter) are checked against the
+/// registry by `Still`, with the flag named in the message.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tv::ui {
+
+/// A bad command line: the message names the flag and echoes the value.
+struct UsageError {
+  std::string message;
+};
+
+enum class ViewKind { scene, follow, rect };
+
+struct PictureOptions {
+  bool help = false;
+  bool list = false;
+  bool timing = false;
+  std::string scene = "bullets-wall";
+  std::vector<std::string> movers = {"continuous"};
+  bool compare = false;
+  std::vector<std::uint64_t> ticks = {1};  ///< increasing, no repeats
+  int width = 1280, height = 720;
+  std::optional<std::string> out;  ///< may hold {tick}; default <scene>_<mover>_<tick>.png
+  std::optional<std::size_t> body = 0;
+  ViewKind view = ViewKind::scene;
+  double viewRect[4] = {0, 0, 0, 0};  ///< x, y, w, h for ViewKind::rect
+  double renderHz = 0.0;
+  int frames = 4;
+  std::vector<std::string> hide, show;
+  std::vector<std::pair<std::string, std::string>> params;  ///< --NAME VALUE, in order
+  /// Which flags were on the command line (a program with saved settings lets these win).
+  bool sceneGiven = false, moverGiven = false, tickGiven = false, sizeGiven = false;
+};
+
+/// Throws UsageError naming the flag. Unknown `--NAME VALUE` pairs are kept as parameters.
+[[nodiscard]] PictureOptions parsePictureOptions(int argc, char** argv);
+
+}  // namespace tv::ui

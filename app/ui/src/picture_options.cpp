@@ -1,0 +1,188 @@
+// The picture's command line, shared by tv-render and tv-debugger.
+#include "tv/ui/picture_options.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+namespace tv::ui {
+
+namespace {
+
+std::vector<std::string> splitList(std::string_view flag, std::string_view text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string_view part = text.substr(start, comma - start);
+    if (part.empty()) {
+      throw UsageError{"--" + std::string(flag) + ": empty item in '" + std::string(text) + "'"};
+    }
+    out.emplace_back(part);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::uint64_t parseTick(std::string_view flag, std::string_view text) {
+  std::uint64_t v = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+  if (text.empty() || ec != std::errc() || ptr != end) {
+    throw UsageError{"--" + std::string(flag) + ": expected a whole number >= 0, but got '" +
+                     std::string(text) + "'"};
+  }
+  return v;
+}
+
+double parseReal(std::string_view flag, std::string_view text) {
+  double v = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v)) {
+    throw UsageError{"--" + std::string(flag) + ": expected a finite number, but got '" +
+                     std::string(text) + "'"};
+  }
+  return v;
+}
+
+void parseSize(std::string_view text, PictureOptions& o) {
+  const std::size_t x = text.find('x');
+  const auto bad = [&] {
+    return UsageError{"--size: expected WxH with 64 <= W, H <= 8192 (e.g. 1280x720), but got '" +
+                      std::string(text) + "'"};
+  };
+  if (x == std::string_view::npos) throw bad();
+  std::uint64_t w = 0, h = 0;
+  try {
+    w = parseTick("size", text.substr(0, x));
+    h = parseTick("size", text.substr(x + 1));
+  } catch (const UsageError&) {
+    throw bad();
+  }
+  if (w < 64 || h < 64 || w > 8192 || h > 8192) throw bad();
+  o.width = static_cast<int>(w);
+  o.height = static_cast<int>(h);
+}
+
+void parseView(std::string_view text, PictureOptions& o) {
+  if (text == "scene") {
+    o.view = ViewKind::scene;
+    return;
+  }
+  if (text == "follow") {
+    o.view = ViewKind::follow;
+    return;
+  }
+  const auto parts = splitList("view", text);
+  if (parts.size() != 4) {
+    throw UsageError{"--view: expected scene, follow or X,Y,W,H, but got '" + std::string(text) +
+                     "'"};
+  }
+  for (std::size_t i = 0; i < 4; ++i) o.viewRect[i] = parseReal("view", parts[i]);
+  if (!(o.viewRect[2] > 0.0 && o.viewRect[3] > 0.0)) {
+    throw UsageError{"--view: W and H must be > 0, but got '" + std::string(text) + "'"};
+  }
+  o.view = ViewKind::rect;
+}
+
+}  // namespace
+
+PictureOptions parsePictureOptions(int argc, char** argv) {
+  PictureOptions o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      o.help = true;
+      continue;
+    }
+    if (arg == "--list") {
+      o.list = true;
+      continue;
+    }
+    if (arg == "--timing") {
+      o.timing = true;
+      continue;
+    }
+    if (arg.size() < 3 || arg.substr(0, 2) != "--") {
+      throw UsageError{"unexpected argument '" + std::string(arg) + "' (flags start with --)"};
+    }
+    std::string name(arg.substr(2));
+    std::string value;
+    if (const auto eq = name.find('='); eq != std::string::npos) {
+      value = name.substr(eq + 1);
+      name.resize(eq);
+    } else {
+      // A flag in the value's place means the value was forgotten.
+      if (i + 1 >= argc || std::string_view(argv[i + 1]).substr(0, 2) == "--") {
+        throw UsageError{"--" + name + " needs a value"};
+      }
+      value = argv[++i];
+    }
+    if (name == "scene") {
+      o.scene = value;
+      o.sceneGiven = true;
+    } else if (name == "mover" || name == "compare") {
+      if (o.moverGiven) {
+        throw UsageError{"--" + name + ": give either one --mover or one --compare"};
+      }
+      o.moverGiven = true;
+      o.compare = name == "compare";
+      o.movers = o.compare ? splitList(name, value) : std::vector<std::string>{value};
+      if (o.compare && o.movers.size() < 2) {
+        throw UsageError{"--compare: expected at least two movers (A,B), but got '" + value + "'"};
+      }
+    } else if (name == "tick") {
+      o.ticks = {parseTick(name, value)};
+      o.tickGiven = true;
+    } else if (name == "ticks") {
+      o.ticks.clear();
+      for (const std::string& t : splitList(name, value)) o.ticks.push_back(parseTick(name, t));
+      std::sort(o.ticks.begin(), o.ticks.end());
+      o.ticks.erase(std::unique(o.ticks.begin(), o.ticks.end()), o.ticks.end());
+      o.tickGiven = true;
+    } else if (name == "size") {
+      parseSize(value, o);
+      o.sizeGiven = true;
+    } else if (name == "out") {
+      if (value.empty()) throw UsageError{"--out: needs a file name"};
+      o.out = value;
+    } else if (name == "body") {
+      if (value == "none") {
+        o.body.reset();
+      } else {
+        o.body = static_cast<std::size_t>(parseTick(name, value));
+      }
+    } else if (name == "view") {
+      parseView(value, o);
+    } else if (name == "render-hz") {
+      o.renderHz = parseReal(name, value);
+      if (o.renderHz < 0.0) {
+        throw UsageError{"--render-hz: expected a rate >= 0, but got '" + value + "'"};
+      }
+    } else if (name == "frames") {
+      const std::uint64_t k = parseTick(name, value);
+      if (k < 2 || k > 100) {
+        throw UsageError{"--frames: expected 2..100 (ImGui's first frame differs), but got '" +
+                         value + "'"};
+      }
+      o.frames = static_cast<int>(k);
+    } else if (name == "hide" || name == "show") {
+      auto& list = name == "hide" ? o.hide : o.show;
+      for (std::string& s : splitList(name, value)) list.push_back(std::move(s));
+    } else if (name == "body-size") {
+      o.params.emplace_back("size", std::move(value));
+    } else {
+      o.params.emplace_back(std::move(name), std::move(value));
+    }
+  }
+  if (o.ticks.size() > 1 && o.out && o.out->find("{tick}") == std::string::npos) {
+    throw UsageError{"--out: with several ticks the file name needs {tick}, but got '" + *o.out +
+                     "'"};
+  }
+  return o;
+}
+
+}  // namespace tv::ui

@@ -1,0 +1,172 @@
+// The still picture shared by tv-render and tv-debugger's screenshot mode.
+#include "tv/ui/still.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+
+#include "tv/error.hpp"
+#include "tv/mover.hpp"
+#include "tv/ui/layout.hpp"
+
+namespace tv::ui {
+
+namespace {
+
+std::string compareTitle(const Session& s, const PictureOptions& o, std::uint64_t tick) {
+  const sim::Params& p = s.sim().params();
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%s at tick %llu   |   velocity %g px/s, body %g px, tile %g px, dt %.2f ms, "
+                "max substep %s   |   traced: %s",
+                o.scene.c_str(), static_cast<unsigned long long>(tick), p.get(sim::param::speed),
+                p.get(sim::param::size), p.get(sim::param::tile), p.get(sim::param::dt) * 1000.0,
+                p.get(sim::param::substep) == 0.0
+                    ? "tile/2"
+                    : (formatNumber(p.get(sim::param::substep)) + " px").c_str(),
+                o.body ? ("body " + std::to_string(*o.body)).c_str() : "none");
+  return text;
+}
+
+Rect viewFor(const PictureOptions& o, const std::vector<std::unique_ptr<Session>>& sessions) {
+  const sim::Params& p = sessions.front()->sim().params();
+  switch (o.view) {
+    case ViewKind::scene:
+      return sessions.front()->sim().camera();
+    case ViewKind::rect:
+      return {o.viewRect[0], o.viewRect[1], o.viewRect[2], o.viewRect[3]};
+    case ViewKind::follow: {
+      // One rect for every panel, so the movers are compared over the same ground.
+      const double minSide = 4.0 * std::max(p.get(sim::param::tile), p.get(sim::param::size));
+      Rect r = sessions.front()->followView(minSide);
+      for (const auto& s : sessions) r = unite(r, s->followView(minSide));
+      return r;
+    }
+  }
+  return sessions.front()->sim().camera();
+}
+
+}  // namespace
+
+const sim::SceneDef& sceneFor(const PictureOptions& o) {
+  if (const sim::SceneDef* s = sim::builtinScenes().tryFind(o.scene)) return *s;
+  std::string valid;
+  for (const std::string_view n : sim::builtinScenes().names()) {
+    valid += (valid.empty() ? "" : ", ") + std::string(n);
+  }
+  throw UsageError{"--scene: no scene is named '" + o.scene + "'; valid: " + valid};
+}
+
+sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o) {
+  sim::Params p = scene.defaults();
+  for (const auto& [name, text] : o.params) {
+    const std::string flag = "--" + (name == "size" ? std::string("body-size") : name);
+    if (!p.has(name)) {
+      std::string valid;
+      for (const std::string_view n : p.names()) {
+        if (n != "size") valid += (valid.empty() ? "--" : ", --") + std::string(n);
+      }
+      throw UsageError{flag + ": not a flag of tv-render nor a parameter of scene '" + scene.name +
+                       "' (its parameters: " + valid + ", --body-size)"};
+    }
+    double v = 0.0;
+    std::size_t used = 0;
+    try {
+      v = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size()) {
+      throw UsageError{flag + ": expected a number, but got '" + text + "'"};
+    }
+    try {
+      p.set(name, v);
+    } catch (const Error& e) {
+      throw UsageError{flag + " " + text + ": " + e.what()};
+    }
+  }
+  return p;
+}
+
+Overlays overlaysFor(const PictureOptions& o) {
+  Overlays on;
+  const auto apply = [&](const std::vector<std::string>& names, bool value, const char* flag) {
+    for (const std::string& n : names) {
+      bool found = n == "all";
+      for (const OverlayToggle& t : overlayToggles()) {
+        if (found && n == "all") on.*t.flag = value;
+        if (n == t.name) {
+          on.*t.flag = value;
+          found = true;
+        }
+      }
+      if (!found) {
+        std::string valid;
+        for (const OverlayToggle& t : overlayToggles()) valid += std::string(" ") + t.name;
+        throw UsageError{std::string(flag) + ": no overlay is named '" + n + "'; valid: all" +
+                         valid};
+      }
+    }
+  };
+  apply(o.hide, false, "--hide");
+  apply(o.show, true, "--show");
+  return on;
+}
+
+Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
+  const sim::Params params = paramsFor(*scene_, o);
+  (void)overlaysFor(o);  // a bad --hide/--show fails before anything runs
+  for (const std::string& m : o.movers) {
+    MoverSpec spec;
+    try {
+      spec = parseMover(m);
+    } catch (const Error& e) {
+      throw UsageError{std::string(o.compare ? "--compare" : "--mover") + ": " + e.what()};
+    }
+    try {
+      sessions_.push_back(std::make_unique<Session>(*scene_, params, spec, std::nullopt));
+    } catch (const Error& e) {
+      throw UsageError{"scene '" + scene_->name + "': " + e.what()};
+    }
+    try {
+      sessions_.back()->select(o.body);
+    } catch (const Error& e) {
+      throw UsageError{"--body: " + std::string(e.what())};
+    }
+  }
+  for (auto& s : sessions_) raw_.push_back(s.get());
+}
+
+void Still::advanceTo(std::uint64_t tick) {
+  for (auto& s : sessions_) {
+    try {
+      s->advanceTo(tick, o_.renderHz);
+    } catch (const Error& e) {
+      throw UsageError{"--tick " + std::to_string(tick) + ": " + e.what()};
+    }
+  }
+}
+
+void Still::beginImage() {
+  const Rect view = viewFor(o_, sessions_);
+  states_.assign(sessions_.size(), DebuggerState{});
+  for (std::size_t k = 0; k < sessions_.size(); ++k) {
+    states_[k].overlays = overlaysFor(o_);
+    states_[k].frameView = view;
+    states_[k].renderHz = o_.renderHz;
+    states_[k].paused = true;  // a still is a paused frame
+    syncDraft(states_[k], *sessions_[k]);
+  }
+  title_ = o_.compare ? compareTitle(*sessions_.front(), o_, sessions_.front()->sim().ticks()) : "";
+}
+
+void Still::drawFrame(ImVec2 display) {
+  ImGui::SetWindowFocus(nullptr);  // a still has no focused window: no highlighted title
+  if (o_.compare) {
+    comparisonLayout(raw_, states_, title_, display);
+  } else {
+    (void)debuggerLayout(*sessions_.front(), states_.front(), display);
+  }
+}
+
+}  // namespace tv::ui

@@ -1,0 +1,107 @@
+#pragma once
+// The debugger: one scene, one or more movers run in lockstep (one ui::Session each), the time
+// controls over them, and everything drawn around the drawing layer's layouts — the menus,
+// the timeline, the scene picker, Help and the substep sweep.
+//
+// Time travel: the sessions' simulations keep a ring of snapshots. Going to tick t restores
+// (or re-runs up to) t - h and ticks the last h ticks again with tracing on, so the inspector
+// and the history overlay show the moves that led to t however it was reached; determinism
+// makes the re-run identical to the first run.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <span>
+
+#include "divergence.hpp"
+#include "gl_window.hpp"
+#include "options.hpp"
+#include "settings.hpp"
+#include "shortcuts.hpp"
+#include "substep_sweep.hpp"
+#include "tv/mover.hpp"
+#include "tv/sim/params.hpp"
+#include "tv/sim/scene.hpp"
+#include "tv/ui/panels.hpp"
+#include "tv/ui/session.hpp"
+
+namespace tv::viewer {
+
+class Debugger {
+ public:
+  /// Opens what the command line names, with `settings` (may be null) filling in what it does
+  /// not. Throws ui::UsageError on a bad command line.
+  Debugger(const ViewerOptions& options, const Settings* settings);
+
+  /// One frame (between ImGui::NewFrame and ImGui::Render): input, time, then every window.
+  /// `seconds` of wall time passed since the last frame.
+  void frame(double seconds, std::span<const KeyPress> keys);
+  [[nodiscard]] bool wantsQuit() const { return quit_; }
+  /// Puts what should survive a restart into `s`.
+  void store(Settings& s) const;
+  /// Freezes anything that reads a clock out of the picture (screenshots).
+  void setPinned(bool pinned) { pinned_ = pinned; }
+  void openHelp() { showHelp_ = true; }
+  /// Paused with nothing computing in the background: the window may wait for input.
+  [[nodiscard]] bool idle() const {
+    return paused_ && divergence_.done() && (!showSweep_ || sweep_.pending() == 0);
+  }
+
+ private:
+  // -- sessions and time (debugger.cpp) ----------------------------------------------------
+  void build(const sim::SceneDef& scene, const sim::Params& params, std::vector<MoverSpec> movers,
+             std::uint64_t landOn);
+  void loadScene(const sim::SceneDef& scene);
+  void setMovers(std::vector<MoverSpec> movers);
+  void goTo(std::uint64_t t);
+  void stepOnce();
+  void advance(double seconds);
+  void select(std::optional<std::size_t> body);
+  void applyActions(const ui::Actions& a);
+  void run(Command c);
+  [[nodiscard]] std::uint64_t tick() const;
+  [[nodiscard]] bool compare() const { return sessions_.size() > 1; }
+  [[nodiscard]] Rect followRect() const;
+  void reportError(const std::string& what);
+
+  // -- windows (debugger_ui.cpp) -----------------------------------------------------------
+  void handleKeys(std::span<const KeyPress> keys);
+  float drawMenuBar();
+  void drawTimeline(ImVec2 display, float height);
+  void drawMain(ImVec2 origin, ImVec2 size);
+  void drawCompareSideBySide(ImVec2 origin, ImVec2 size);
+  void drawOverlaid();
+  void drawPicker();
+  void drawSweep();
+  void syncCameras();
+
+  const sim::SceneDef* scene_ = nullptr;
+  sim::Params params_;
+  std::vector<MoverSpec> movers_;
+  std::vector<std::unique_ptr<ui::Session>> sessions_;
+  std::vector<ui::DebuggerState> states_;  // one per session; states_[0] holds the controls
+  std::optional<std::size_t> selected_;
+  std::size_t inspected_ = 0;  // the comparison panel whose inspector is shown
+
+  bool paused_ = true;
+  double speed_ = 1.0;
+  double clock_ = 0.0;  // simulated seconds not yet drawn
+  std::uint64_t furthest_ = 0;
+  bool follow_ = false;
+  bool overlay_ = false;
+  bool showHelp_ = false;
+  bool showSweep_ = false;
+  bool openPicker_ = false;
+  bool quit_ = false;
+  bool pinned_ = false;
+  std::string pickerFilter_;
+  std::string message_;  // the last error, shown in the timeline bar
+
+  Divergence divergence_;
+  SubstepSweep sweep_;
+};
+
+}  // namespace tv::viewer

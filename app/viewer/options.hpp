@@ -1,0 +1,34 @@
+#pragma once
+// tv-debugger's command line: the picture's flags, exactly as tv-render reads them (the scene,
+// movers, tick, size, body, view, render rate, overlays and scene parameters), plus the
+// debugger's own.
+
+#include <optional>
+#include <string>
+
+#include "tv/ui/picture_options.hpp"
+
+namespace tv::viewer {
+
+struct ViewerOptions {
+  ui::PictureOptions picture;
+  /// Smoke mode: render `picture.frames` frames, write tv-render's picture of the scene at the
+  /// tick to this PNG and exit.
+  std::optional<std::string> screenshot;
+  /// The same, but the whole debugger as a person sees it (menus, timeline, windows).
+  std::optional<std::string> appScreenshot;
+  /// Neither read nor write the settings file.
+  bool noSettings = false;
+  /// UI scale; 0: the monitor's content scale.
+  double uiScale = 0.0;
+  /// Open the substep sweep window.
+  bool sweep = false;
+  /// Draw compared movers in one view instead of side by side.
+  bool overlay = false;
+};
+
+/// Throws ui::UsageError naming the flag.
+[[nodiscard]] ViewerOptions parseViewerOptions(int argc, char** argv);
+extern const char* const kUsage;
+
+}  // namespace tv::viewer

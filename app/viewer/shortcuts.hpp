@@ -1,0 +1,42 @@
+#pragma once
+// Every shortcut, in one table: the Help window lists it and the menus label their items from
+// it, so what the Help says and what the menus show never disagree.
+
+#include <span>
+
+namespace tv::viewer {
+
+enum class Command {
+  pause,
+  step,
+  stepBack,
+  stepForward,
+  restart,
+  slower,
+  faster,
+  frameAll,
+  follow,
+  compare,
+  overlay,
+  sweep,
+  openScene,
+  previousScene,
+  nextScene,
+  help,
+  quit,
+};
+
+struct Shortcut {
+  Command command;
+  const char* keys;  ///< as shown in menus and Help
+  const char* what;
+};
+
+[[nodiscard]] std::span<const Shortcut> shortcuts();
+/// The keys of `c`, e.g. "Ctrl+O".
+[[nodiscard]] const char* keysOf(Command c);
+
+/// The Help window: every shortcut and the mouse.
+void drawHelp(bool* open);
+
+}  // namespace tv::viewer
