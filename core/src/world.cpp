@@ -362,13 +362,15 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
       f(slot, e.generation, e.rect);
     }
   };
-  // A move whose bounding box spans a few cells visits them all: the swept walk would skip at
-  // most one or two, for more arithmetic than those cells cost to scan.
   // Nothing lies outside the cells that ever held an item: both walks are clipped to them.
   const CellRange all = grid_.cellsOf(hull);
   const CellRange box{std::max(all.x0, used_.x0), std::max(all.y0, used_.y0),
                       std::min(all.x1, used_.x1), std::min(all.y1, used_.y1)};
-  if (broad == BroadPhase::swept && box.count() > kDirectCells) {
+  // The swept walk pays only where it skips cells of the bounding box: not along an axis (the
+  // hull is the box), nor when the box spans a few cells (it would skip one or two, for more
+  // arithmetic than those cost to scan).
+  const bool alongAnAxis = goal.x == r.x || goal.y == r.y;
+  if (broad == BroadPhase::swept && box.count() > kDirectCells && !alongAnAxis) {
     grid_.forEachSweptCell(r, goal, visit, used_);
   } else {
     Grid::forEachCell(box, visit);
