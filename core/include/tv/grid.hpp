@@ -110,6 +110,15 @@ void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f, const CellRange
   const std::int64_t c0 = std::max(index(uMin), alongX ? clip.x0 : clip.y0);
   const std::int64_t c1 = std::min(index(uMax), alongX ? clip.x1 : clip.y1);
   const std::int64_t rMin = alongX ? clip.y0 : clip.x0, rMax = alongX ? clip.y1 : clip.x1;
+  // Times come from one reciprocal and vs from the start and end edges; their rounding is far
+  // below a cell, and a margin of a few ulps of the largest magnitude involved (fixed for the
+  // whole walk) keeps it conservative without an absolute epsilon.
+  const double inv = du != 0.0 ? 1.0 / du : 0.0;
+  const double dv0 = w0 - v0, dv1 = w1 - v1;
+  const double scale = std::max({std::fabs(v0), std::fabs(v1), std::fabs(w0), std::fabs(w1),
+                                 std::fabs(dv0), size_});
+  const double slack = scale * 0x1p-45;
+  const double vFloor = std::min(v0, w0), vCeil = std::max(v1, w1);
   for (std::int64_t c = c0; c <= c1; ++c) {
     // The slice of the column the hull can occupy, then the times the rect spends in it.
     const double lo = std::max(uMin, static_cast<double>(c) * size_);
@@ -117,19 +126,13 @@ void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f, const CellRange
     double t0 = 0.0, t1 = 1.0;
     if (du != 0.0) {
       // Rect's u-interval [u0 + t·du, u1 + t·du] meets [lo, hi].
-      const double ta = du > 0 ? (lo - u1) / du : (hi - u0) / du;
-      const double tb = du > 0 ? (hi - u0) / du : (lo - u1) / du;
+      const double ta = du > 0 ? (lo - u1) * inv : (hi - u0) * inv;
+      const double tb = du > 0 ? (hi - u0) * inv : (lo - u1) * inv;
       t0 = std::clamp(ta, 0.0, 1.0);
       t1 = std::clamp(tb, 0.0, 1.0);
     }
-    double vLo = std::min(v0 + t0 * (w0 - v0), v0 + t1 * (w0 - v0));
-    double vHi = std::max(v1 + t0 * (w1 - v1), v1 + t1 * (w1 - v1));
-    // Rounding in the times above is far below a cell; a margin of a few ulps of the largest
-    // magnitude keeps the walk conservative without an absolute epsilon.
-    const double scale = std::max({std::fabs(vLo), std::fabs(vHi), std::fabs(w0 - v0), size_});
-    const double slack = scale * 0x1p-46;
-    vLo = std::max(vLo - slack, std::min(v0, w0));
-    vHi = std::min(vHi + slack, std::max(v1, w1));
+    const double vLo = std::max(std::min(v0 + t0 * dv0, v0 + t1 * dv0) - slack, vFloor);
+    const double vHi = std::min(std::max(v1 + t0 * dv1, v1 + t1 * dv1) + slack, vCeil);
     const std::int64_t r0 = std::max(index(vLo), rMin), r1 = std::min(index(vHi), rMax);
     for (std::int64_t r = r0; r <= r1; ++r) f(alongX ? Cell{c, r} : Cell{r, c});
   }
