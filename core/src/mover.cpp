@@ -36,13 +36,18 @@ constexpr double kMaxPixels = 1 << 24;
 
 std::string MoverSpec::name() const {
   switch (kind) {
-    case MoverKind::discrete: return "discrete";
-    case MoverKind::sweep: return "sweep";
+    case MoverKind::discrete:
+      return "discrete";
+    case MoverKind::sweep:
+      return "sweep";
     case MoverKind::substep:
       return inner == MoverKind::sweep ? "substep-sweep" : "substep-discrete";
-    case MoverKind::continuous: return "continuous";
-    case MoverKind::pixel: return "pixel";
-    case MoverKind::adaptive: return "adaptive";
+    case MoverKind::continuous:
+      return "continuous";
+    case MoverKind::pixel:
+      return "pixel";
+    case MoverKind::adaptive:
+      return "adaptive";
   }
   return "?";
 }
@@ -73,7 +78,9 @@ MoverSpec parseMover(std::string_view name) {
   return s;
 }
 
-std::span<const std::string_view> moverNames() { return kNames; }
+std::span<const std::string_view> moverNames() {
+  return kNames;
+}
 
 std::string_view moverDescription(std::string_view name) {
   for (std::size_t i = 0; i < kNames.size(); ++i) {
@@ -108,12 +115,18 @@ MoveResult Mover::move(World& world, ItemId id, Vec2 goal, Filter filter, MoveTr
   const Remainder remainder = id.index < remainder_.size() ? remainder_[id.index] : Remainder{};
   try {
     switch (spec_.kind) {
-      case MoverKind::discrete: return discrete(world, id, goal, filter, trace, collisions_);
-      case MoverKind::sweep: return world.move(id, goal, filter, {BroadPhase::bounds, trace});
-      case MoverKind::substep: return substep(world, id, goal, filter, trace);
-      case MoverKind::continuous: return world.move(id, goal, filter, {BroadPhase::swept, trace});
-      case MoverKind::pixel: return pixel(world, id, goal, filter, trace);
-      case MoverKind::adaptive: return adaptive(world, id, goal, filter, trace);
+      case MoverKind::discrete:
+        return discrete(world, id, goal, filter, trace, collisions_);
+      case MoverKind::sweep:
+        return world.move(id, goal, filter, {BroadPhase::bounds, trace});
+      case MoverKind::substep:
+        return substep(world, id, goal, filter, trace);
+      case MoverKind::continuous:
+        return world.move(id, goal, filter, {BroadPhase::swept, trace});
+      case MoverKind::pixel:
+        return pixel(world, id, goal, filter, trace);
+      case MoverKind::adaptive:
+        return adaptive(world, id, goal, filter, trace);
     }
   } catch (...) {
     world.update(id, start);
@@ -297,7 +310,15 @@ MoveResult Mover::adaptive(World& world, ItemId id, Vec2 goal, Filter filter, Mo
   requireFinite("tv::Mover::move", "goal.y", goal.y);
   const double dist = std::max(std::fabs(goal.x - start.x), std::fabs(goal.y - start.y));
   const double extent = std::min({start.w, start.h, world.minExtent()});
-  if (dist < spec_.safetyFraction * extent) {
+  // A body whose last move ended against something (resting on a floor, pressed to a wall)
+  // and now moves into it again will meet it again: skip the probe that would only say so.
+  // Speed only, never results.
+  if (contact_.size() <= id.index) contact_.resize(id.index + 1);
+  Contact& contact = contact_[id.index];
+  const Vec2 d = goal - start.position();
+  const bool pressing = contact.generation == id.generation + 1 &&
+                        d.x * contact.normal.x + d.y * contact.normal.y < 0.0;
+  if (!pressing && dist < spec_.safetyFraction * extent) {
     // The swept hull of a move lies inside its bounding box: if nothing there can interact,
     // the move is free and a teleport is exact.
     const Rect hull = unite(start, start.at(goal));
@@ -314,7 +335,10 @@ MoveResult Mover::adaptive(World& world, ItemId id, Vec2 goal, Filter filter, Mo
       return {goal, collisions_};
     }
   }
-  return world.move(id, goal, filter, {BroadPhase::swept, trace});
+  const MoveResult r = world.move(id, goal, filter, {BroadPhase::swept, trace});
+  contact =
+      r.collisions.empty() ? Contact{} : Contact{r.collisions.back().normal, id.generation + 1};
+  return r;
 }
 
 }  // namespace tv

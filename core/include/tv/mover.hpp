@@ -40,8 +40,10 @@ enum class MoverKind : std::uint8_t {
   pixel,
   /// A short move (below `safetyFraction` of the smallest extent of the mover and the world)
   /// first asks whether its hull is free — one rect query, as cheap as discrete — and teleports
-  /// if so; anything else, and every long move, goes continuous. Same results as continuous;
-  /// pays for sweeps only where something is near.
+  /// if so; anything else, and every long move, goes continuous. A body moving back into what
+  /// its last move ended against (resting on a floor) goes straight to continuous, skipping a
+  /// probe that would fail. Same results as continuous; pays for sweeps only where something is
+  /// near.
   adaptive,
 };
 
@@ -81,7 +83,10 @@ class Mover {
                   MoveTrace* trace = nullptr);
 
   /// Forgets per-item state (the pixel mover's remainders), e.g. when a scene restarts.
-  void reset() { remainder_.clear(); }
+  void reset() {
+    remainder_.clear();
+    contact_.clear();
+  }
 
  private:
   MoveResult discrete(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace,
@@ -100,6 +105,11 @@ class Mover {
     std::uint32_t generation = 0;
   };
   std::vector<Remainder> remainder_;  // pixel: sub-pixel remainder per item slot
+  struct Contact {
+    Vec2 normal;                   // of the last move's last collision
+    std::uint32_t generation = 0;  // the item's + 1; 0: its last move met nothing
+  };
+  std::vector<Contact> contact_;  // adaptive, per item slot
 };
 
 }  // namespace tv
