@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "expect_rejected.hpp"
 #include "tv/error.hpp"
 #include "tv/world.hpp"
 
@@ -22,23 +23,6 @@ using tv::World;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Runs `f`, which must throw tv::Error mentioning every string of `mentions`, and checks that
-// the world's state hash did not move.
-template <class F>
-void expectRejected(const World& w, std::initializer_list<std::string_view> mentions, F&& f) {
-  const std::uint64_t before = w.stateHash();
-  try {
-    f();
-    ADD_FAILURE() << "no tv::Error thrown; expected one mentioning " << *mentions.begin();
-  } catch (const tv::Error& e) {
-    const std::string msg = e.what();
-    for (const std::string_view m : mentions) {
-      EXPECT_NE(msg.find(m), std::string::npos) << "message \"" << msg << "\" lacks \"" << m << '"';
-    }
-  }
-  EXPECT_EQ(w.stateHash(), before) << "the failed call changed the world";
-}
 
 // A small world with one item in it and one removed.
 struct Scene {

@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "expect_rejected.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/timestep.hpp"
@@ -23,21 +24,6 @@ using tv::Rect;
 using tv::ResponseId;
 using tv::Vec2;
 using tv::World;
-
-template <class F>
-void expectRejected(const World& w, std::initializer_list<std::string_view> mentions, F&& f) {
-  const std::uint64_t before = w.stateHash();
-  try {
-    f();
-    ADD_FAILURE() << "no tv::Error thrown; expected one mentioning " << *mentions.begin();
-  } catch (const tv::Error& e) {
-    const std::string msg = e.what();
-    for (const std::string_view m : mentions) {
-      EXPECT_NE(msg.find(m), std::string::npos) << "message \"" << msg << "\" lacks \"" << m << '"';
-    }
-  }
-  EXPECT_EQ(w.stateHash(), before) << "the failed call changed the world";
-}
 
 // [SECTION] moves that would never end -----------------------------------------------------------
 
