@@ -15,10 +15,10 @@ if [ "${1:-}" = --headless ]; then
   shift
 fi
 if [ $headless = 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; }; then
-  if cmake --build --preset release --target tv-debugger >&2 2>/dev/null; then
+  if cmake --build --preset release --target tv-debugger >&2; then
     exec "$build/app/viewer/tv-debugger" "$@"
   fi
-  echo "run.sh: the debugger is not built here; rendering the comparison images instead" >&2
+  echo "run.sh: the debugger did not build (above); rendering the comparison images instead" >&2
 fi
 
 cmake --build --preset release --target tv-render tv-run >&2
@@ -26,6 +26,7 @@ if cmake --build --preset release --target tv-bench >/dev/null 2>&1; then bench=
 
 # Each line: file name | tv-render arguments. The moment each naive mover fails, beside the fix.
 out=out/comparisons
+rm -rf "$out"
 mkdir -p "$out"
 while IFS='|' read -r name args; do
   # shellcheck disable=SC2086  # the arguments are words by design

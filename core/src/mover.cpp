@@ -261,6 +261,9 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
   Rect r = start;
   const auto blockers = [&](const Rect& probe, Vec2 normal) {
     bool blocked = false;
+    if (trace) {
+      Grid::forEachCell(world.grid().cellsOf(probe), [&](Cell c) { trace->cells.push_back(c); });
+    }
     world.queryRect(probe, overlapping_, id);
     for (const ItemId other : overlapping_) {
       if (trace) trace->candidates.push_back(other);

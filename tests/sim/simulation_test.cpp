@@ -204,6 +204,21 @@ TEST(Snapshots, ATickThatThrowsChangesNothing) {
   EXPECT_EQ(sim.stateHash(), twin.stateHash());
 }
 
+// Candidates per move is a mean over the traced moves; stepping back and replaying ticks must
+// not count the replayed moves twice.
+TEST(Snapshots, SteppingBackAndForthDoesNotRecountTracedMoves) {
+  Simulation sim("crowd", "continuous");  // body 0 moves every tick
+  sim.traceBody(0);
+  for (int t = 0; t < 5; ++t) sim.tick();
+  const TraceStats atFive = sim.traceStats();
+  ASSERT_EQ(atFive.moves, 5u);
+  sim.seek(2);
+  EXPECT_EQ(sim.traceStats().moves, 2u);
+  sim.seek(5);
+  EXPECT_EQ(sim.traceStats().moves, 5u);
+  EXPECT_EQ(sim.traceStats().candidates, atFive.candidates);
+}
+
 TEST(Tracing, IsOffByDefaultAndNeverChangesResults) {
   for (const SceneDef& s : builtinScenes().all()) {
     for (const std::string_view m : moverNames()) {

@@ -66,7 +66,7 @@ sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o) {
       for (const std::string_view n : p.names()) {
         if (n != "size") valid += (valid.empty() ? "--" : ", --") + std::string(n);
       }
-      throw UsageError{flag + ": not a flag of tv-render nor a parameter of scene '" + scene.name +
+      throw UsageError{flag + ": neither a flag nor a parameter of scene '" + scene.name +
                        "' (its parameters: " + valid + ", --body-size)"};
     }
     double v = 0.0;

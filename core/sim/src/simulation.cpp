@@ -292,6 +292,7 @@ void Simulation::record() {
     s.bodies[i] = {b.rect.position(), b.velocity, b.state, b.active};
   }
   s.counters = counters_;
+  s.traceStats = traceStats_;
   // Only the pixel mover keeps state between moves (its sub-pixel remainders); copying the
   // others would cost a little every tick and restore nothing.
   s.hasMover = mover_.spec().kind == MoverKind::pixel;
@@ -313,6 +314,7 @@ void Simulation::restore(std::uint64_t t) {
     previous_[i] = st.position;
   }
   counters_ = s.counters;
+  traceStats_ = s.traceStats;
   if (s.hasMover) mover_ = s.mover;
   tick_ = t;
   traceValid_ = false;

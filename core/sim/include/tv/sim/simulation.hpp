@@ -140,6 +140,7 @@ class Simulation {
   struct Snapshot {
     std::vector<BodyState> bodies;
     Counters counters;
+    TraceStats traceStats;  // so stepping back through history does not count moves twice
     bool hasMover = false;
     Mover mover;  // only movers with per-item state (pixel); others keep none between moves
   };
