@@ -30,8 +30,8 @@ const char* const kUsage =
     "  --frames K       ImGui frames rendered before the capture (default 4, at least 2: panels\n"
     "                   placed below auto-sized ones settle on the third)\n"
     "  --timing         print how long a frame takes (stderr; never in the image)\n"
-    "  --PARAM VALUE    any parameter of the scene: --speed --size... see --list. Note --size is\n"
-    "                   the image size; the bodies' size is --body-size\n"
+    "  --PARAM VALUE    any parameter of the scene (--list shows each scene's with its default):\n"
+    "                   --speed --body-size --tile --dt --substep --offset ... (--size is the image)\n"
     "  --list           scenes and movers with their one-line descriptions\n"
     "Exit status: 0 done, 1 rendering failed, 2 bad command line.\n";
 
