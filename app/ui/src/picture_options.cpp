@@ -135,9 +135,11 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
         throw UsageError{"--compare: expected at least two movers (A,B), but got '" + value + "'"};
       }
     } else if (name == "tick") {
+      if (o.tickGiven) throw UsageError{"--tick: the tick was already given (by --tick or --ticks)"};
       o.ticks = {parseTick(name, value)};
       o.tickGiven = true;
     } else if (name == "ticks") {
+      if (o.tickGiven) throw UsageError{"--ticks: the tick was already given (by --tick or --ticks)"};
       o.ticks.clear();
       for (const std::string& t : splitList(name, value)) o.ticks.push_back(parseTick(name, t));
       std::sort(o.ticks.begin(), o.ticks.end());
@@ -148,6 +150,10 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       o.sizeGiven = true;
     } else if (name == "out") {
       if (value.empty()) throw UsageError{"--out: needs a file name"};
+      if (value.size() < 4 || value.compare(value.size() - 4, 4, ".png") != 0) {
+        throw UsageError{"--out: the image is written as PNG, so the name must end in .png, but was '" +
+                         value + "'"};
+      }
       o.out = value;
     } else if (name == "body") {
       if (value == "none") {
