@@ -363,7 +363,7 @@ void Debugger::drawCompareSideBySide(ImVec2 origin, ImVec2 size) {
   ui::Actions a;
   float y = 0.0f;
   if (ImGui::Begin("Scene and mover", nullptr, kFixed)) {
-    ImGui::TextColored(colour(pal::kDim), "parameters apply to every mover; 'mover' is the first");
+    ImGui::TextColored(colour(pal::kDim), "parameters apply to every compared mover");
     a = ui::controlsContents(*sessions_.front(), states_[0]);
     y = ImGui::GetWindowHeight();
   }

@@ -60,7 +60,7 @@ void syncDraft(DebuggerState& st, const Session& session) {
 Actions controlsContents(const Session& session, DebuggerState& st) {
   Actions a;
   if (ImGui::BeginTable("choice", 2, ImGuiTableFlags_SizingStretchProp)) {
-    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, 150.0f);
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, 172.0f);
     ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
     rowLabel("scene");
     if (ImGui::BeginCombo("##scene", st.draftScene.c_str())) {
