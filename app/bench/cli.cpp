@@ -1,5 +1,7 @@
 #include "cli.hpp"
 
+#include "tv/app/flags.hpp"
+
 #include <charconv>
 #include <cmath>
 
@@ -18,25 +20,11 @@ std::string_view modeName(Mode m) {
 }
 
 double parseNumber(std::string_view flag, std::string_view text) {
-  double v = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v)) {
-    throw UsageError{"--" + std::string(flag) + ": expected a finite number, but got '" +
-                     std::string(text) + "'"};
-  }
-  return v;
+  return tv::app::parseFinite<UsageError>(flag, text);
 }
 
 std::uint64_t parseCount(std::string_view flag, std::string_view text) {
-  std::uint64_t v = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (text.empty() || ec != std::errc() || ptr != end) {
-    throw UsageError{"--" + std::string(flag) + ": expected a whole number >= 0, but got '" +
-                     std::string(text) + "'"};
-  }
-  return v;
+  return tv::app::parseWhole<UsageError>(flag, text);
 }
 
 namespace {

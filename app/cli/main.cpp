@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "tv/app/flags.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
@@ -59,25 +60,11 @@ struct Options {
 };
 
 double parseNumber(std::string_view flag, std::string_view text) {
-  double v = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (text.empty() || ec != std::errc() || ptr != end) {
-    throw UsageError{"--" + std::string(flag) + ": expected a number, but got '" +
-                     std::string(text) + "'"};
-  }
-  return v;
+  return tv::app::parseFinite<UsageError>(flag, text);
 }
 
 std::uint64_t parseCount(std::string_view flag, std::string_view text) {
-  std::uint64_t v = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (text.empty() || ec != std::errc() || ptr != end) {
-    throw UsageError{"--" + std::string(flag) + ": expected a whole number >= 0, but got '" +
-                     std::string(text) + "'"};
-  }
-  return v;
+  return tv::app::parseWhole<UsageError>(flag, text);
 }
 
 Options parseArgs(int argc, char** argv) {

@@ -1,6 +1,8 @@
 // The picture's command line, shared by tv-render and tv-debugger.
 #include "tv/ui/picture_options.hpp"
 
+#include "tv/app/flags.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -27,25 +29,11 @@ std::vector<std::string> splitList(std::string_view flag, std::string_view text)
 }
 
 std::uint64_t parseTick(std::string_view flag, std::string_view text) {
-  std::uint64_t v = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (text.empty() || ec != std::errc() || ptr != end) {
-    throw UsageError{"--" + std::string(flag) + ": expected a whole number >= 0, but got '" +
-                     std::string(text) + "'"};
-  }
-  return v;
+  return app::parseWhole<UsageError>(flag, text);
 }
 
 double parseReal(std::string_view flag, std::string_view text) {
-  double v = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v)) {
-    throw UsageError{"--" + std::string(flag) + ": expected a finite number, but got '" +
-                     std::string(text) + "'"};
-  }
-  return v;
+  return app::parseFinite<UsageError>(flag, text);
 }
 
 void parseSize(std::string_view text, PictureOptions& o) {
