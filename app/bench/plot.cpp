@@ -181,9 +181,37 @@ bool canPlot() {
 }
 
 void writeScatterPng(const ScatterPlot& plot, const std::filesystem::path& path) {
-  constexpr int kW = 1400, kH = 900;
+  const std::size_t n = plot.points.size();
+  const std::size_t valueCols = plot.keyColumns.size();
+  // The key beside the plot: marker, number, label, then the values, one row per point.
+  std::vector<std::string> numbers(n);
+  for (std::size_t i = 0; i < n; ++i) numbers[i] = std::to_string(i + 1);
+  double numW = 0, labelW = 0;
+  std::vector<double> valueW(valueCols, 0);
+  {
+    const Canvas measure(1, 1);
+    numW = measure.textWidth("#", true);
+    labelW = measure.textWidth("configuration", true);
+    for (std::size_t k = 0; k < valueCols; ++k)
+      valueW[k] = measure.textWidth(plot.keyColumns[k], true);
+    for (std::size_t i = 0; i < n; ++i) {
+      const PlotPoint& p = plot.points[i];
+      numW = std::max(numW, measure.textWidth(numbers[i], true));
+      labelW = std::max(labelW, measure.textWidth(p.label, true));
+      for (std::size_t k = 0; k < valueCols && k < p.keyValues.size(); ++k)
+        valueW[k] = std::max(valueW[k], measure.textWidth(p.keyValues[k], true));
+    }
+  }
+  constexpr double kMarkerW = 34, kGap = 14, kValueGap = 28, kRowH = 32, kPlotW = 1000;
+  double keyW = kMarkerW + numW + kGap + labelW;
+  for (const double w : valueW) keyW += kValueGap + w;
+  const double left = 130, right = left + kPlotW, top = 110;
+  const double keyX = right + 60;
+  const int kW = static_cast<int>(std::ceil(keyX + keyW + 30));
+  const int kH = static_cast<int>(
+      std::max(900.0, std::ceil(top + kRowH * static_cast<double>(n + 1) + 160)));
   Canvas c(kW, kH);
-  const double left = 130, right = kW - 60, top = 110, bottom = kH - 150;
+  const double bottom = kH - 150;
   const double zeroBand = 80;  // below the log axis: where error 0 is drawn
   const double plotBottom = bottom - zeroBand;
 
@@ -228,8 +256,10 @@ void writeScatterPng(const ScatterPlot& plot, const std::filesystem::path& path)
   }
   c.fillRect(left, plotBottom + 4, right, bottom, {0.96, 0.97, 0.94});
   c.text(left - 12 - c.textWidth("0", true), sy(0) - c.textHeight(true) / 2, "0", kInk, true);
-  c.text(right - 8 - c.textWidth("error 0: exact", false), plotBottom + 8, "error 0: exact", kMuted,
-         false);
+  const std::string bandNote = "error 0: exact";
+  const Box bandBox{right - 12 - c.textWidth(bandNote, false), plotBottom + 6, right - 4,
+                    plotBottom + 10 + c.textHeight(false)};
+  c.text(bandBox.x0 + 4, plotBottom + 8, bandNote, kMuted, false);
   c.line(left, top, left, bottom, kInk, 2);
   c.line(left, bottom, right, bottom, kInk, 2);
 
@@ -247,65 +277,211 @@ void writeScatterPng(const ScatterPlot& plot, const std::filesystem::path& path)
     if (p.front) front.push_back(&p);
   std::sort(front.begin(), front.end(),
             [](const PlotPoint* a, const PlotPoint* b) { return a->x < b->x; });
+  struct Seg {
+    double x0, y0, x1, y1;
+  };
+  std::vector<Seg> frontSegs;
   for (std::size_t i = 0; i + 1 < front.size(); ++i) {
     const double x0 = sx(front[i]->x), y0 = sy(front[i]->y);
     const double x1 = sx(front[i + 1]->x), y1 = sy(front[i + 1]->y);
-    c.line(x0, y0, x1, y0, kFront, 3);
-    c.line(x1, y0, x1, y1, kFront, 3);
+    frontSegs.push_back({x0, y0, x1, y0});
+    frontSegs.push_back({x1, y0, x1, y1});
+  }
+  for (const Seg& sg : frontSegs) c.line(sg.x0, sg.y0, sg.x1, sg.y1, kFront, 3);
+
+  // Points.
+  std::vector<double> px(n), py(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const PlotPoint& p = plot.points[i];
+    px[i] = sx(p.x);
+    py[i] = sy(p.y);
+    if (p.front) c.disc(px[i], py[i], 11, kFront, 3);
+    if (p.bad) {
+      c.disc(px[i], py[i], 7, kBad, 3);
+    } else {
+      c.disc(px[i], py[i], 7, kGood);
+    }
   }
 
-  // Points, then labels placed where they overlap neither a point nor another label.
-  std::vector<Box> taken;
-  for (const PlotPoint& p : plot.points) {
-    const double x = sx(p.x), y = sy(p.y);
-    taken.push_back({x - 8, y - 8, x + 8, y + 8});
-  }
-  for (const PlotPoint& p : plot.points) {
-    const double x = sx(p.x), y = sy(p.y);
-    if (p.front) c.disc(x, y, 11, kFront, 3);
-    if (p.bad) {
-      c.disc(x, y, 7, kBad, 3);
+  // Number tags. Points whose discs overlap share one tag ("14,15"). Each tag goes right next
+  // to its point if it can, else a little further out with a leader line; a tag never leaves the
+  // plot area, covers a point, another tag or a leader, and leaders never cross each other or
+  // pass over a point. Crowded points are placed first, while there is still room near them.
+  struct Tag {
+    std::string text;
+    std::vector<std::size_t> members;
+    double x = 0, y = 0;  // the first member's centre
+    bool bad = false;
+  };
+  std::vector<Tag> tags;
+  for (std::size_t i = 0; i < n; ++i) {
+    Tag* joined = nullptr;
+    for (Tag& t : tags) {
+      if (std::hypot(px[i] - t.x, py[i] - t.y) < 9) joined = &t;
+    }
+    if (joined) {
+      joined->text += "," + numbers[i];
+      joined->members.push_back(i);
+      joined->bad = joined->bad || plot.points[i].bad;
     } else {
-      c.disc(x, y, 7, kGood);
+      tags.push_back({numbers[i], {i}, px[i], py[i], plot.points[i].bad});
     }
   }
-  for (const PlotPoint& p : plot.points) {
-    const double x = sx(p.x), y = sy(p.y);
-    const double w = c.textWidth(p.label, true), h = c.textHeight(true);
-    // Beside the point first, then further up or down the same side (with a leader line).
-    std::vector<std::pair<double, double> > offsets;
-    for (int k = 0; k <= 8; ++k) {
-      for (const int sign : {-1, 1}) {
-        const double dy = -h / 2 + sign * k * (h + 6);
-        offsets.emplace_back(14, dy);
-        offsets.emplace_back(-14 - w, dy);
-        if (k == 0) break;
-      }
-      if (k == 0) {
-        offsets.emplace_back(-w / 2, -h - 12);
-        offsets.emplace_back(-w / 2, 12);
+  const auto crowd = [&](const Tag& t) {
+    int k = 0;
+    for (std::size_t j = 0; j < n; ++j) k += std::hypot(px[j] - t.x, py[j] - t.y) < 90 ? 1 : 0;
+    return k;
+  };
+  std::vector<std::size_t> order(tags.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return crowd(tags[a]) > crowd(tags[b]); });
+
+  const auto segsCross = [](const Seg& a, const Seg& b) {
+    const auto cross = [](double ax, double ay, double bx, double by, double cx, double cy) {
+      return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+    };
+    const double d1 = cross(a.x0, a.y0, a.x1, a.y1, b.x0, b.y0);
+    const double d2 = cross(a.x0, a.y0, a.x1, a.y1, b.x1, b.y1);
+    const double d3 = cross(b.x0, b.y0, b.x1, b.y1, a.x0, a.y0);
+    const double d4 = cross(b.x0, b.y0, b.x1, b.y1, a.x1, a.y1);
+    return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+  };
+  const auto segDist = [](const Seg& sg, double x, double y) {
+    const double dx = sg.x1 - sg.x0, dy = sg.y1 - sg.y0, len2 = dx * dx + dy * dy;
+    const double t =
+        len2 > 0 ? std::clamp(((x - sg.x0) * dx + (y - sg.y0) * dy) / len2, 0.0, 1.0) : 0;
+    return std::hypot(x - (sg.x0 + t * dx), y - (sg.y0 + t * dy));
+  };
+  const auto segMeetsBox = [&](const Seg& sg, const Box& b) {
+    const double len = std::hypot(sg.x1 - sg.x0, sg.y1 - sg.y0);
+    const int steps = std::max(1, static_cast<int>(len / 2));
+    for (int k = 0; k <= steps; ++k) {
+      const double t = static_cast<double>(k) / steps;
+      const double x = sg.x0 + t * (sg.x1 - sg.x0), y = sg.y0 + t * (sg.y1 - sg.y0);
+      if (x > b.x0 && x < b.x1 && y > b.y0 && y < b.y1) return true;
+    }
+    return false;
+  };
+
+  std::vector<Box> placed;
+  std::vector<Seg> leaders;
+  const double th = c.textHeight(true);
+  struct Drawn {
+    Box box;
+    bool leader;
+    Seg seg;
+    const Tag* tag;
+  };
+  std::vector<Drawn> drawn;
+  for (const std::size_t ti : order) {
+    const Tag& t = tags[ti];
+    const double w = c.textWidth(t.text, true) + 8, h = th + 4;
+    std::vector<std::size_t> own = t.members;
+    const auto isOwn = [&](std::size_t j) {
+      return std::find(own.begin(), own.end(), j) != own.end();
+    };
+    // Directions: right, left, up, down, then the diagonals; rings further and further out.
+    static const double kDirs[][2] = {{1, 0},   {-1, 0},    {0, -1},   {0, 1},
+                                      {1, -1},  {-1, -1},   {1, 1},    {-1, 1},
+                                      {1, -0.5}, {-1, -0.5}, {1, 0.5}, {-1, 0.5}};
+    bool done = false;
+    Drawn best{{t.x + 13, t.y - h / 2, t.x + 13 + w, t.y + h / 2}, false, {}, &t};
+    for (int pass = 0; pass < 2 && !done; ++pass) {
+      for (const double d : {13.0, 26.0, 42.0, 62.0, 86.0, 115.0, 150.0, 190.0}) {
+        for (const auto& dir : kDirs) {
+          const double len = std::hypot(dir[0], dir[1]);
+          const double ux = dir[0] / len, uy = dir[1] / len;
+          const double cx = t.x + ux * d + (dir[0] > 0 ? w / 2 : dir[0] < 0 ? -w / 2 : 0);
+          const double cy = t.y + uy * d + (dir[1] > 0 ? h / 2 : dir[1] < 0 ? -h / 2 : 0);
+          const Box b{cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2};
+          if (b.x0 < left + 4 || b.x1 > right - 4 || b.y0 < top + 2 || b.y1 > bottom - 2) continue;
+          if (b.meets(bandBox)) continue;
+          const Box margin{b.x0 - 3, b.y0 - 3, b.x1 + 3, b.y1 + 3};
+          bool ok = std::none_of(placed.begin(), placed.end(),
+                                 [&](const Box& o) { return o.meets(margin); });
+          for (std::size_t j = 0; ok && j < n; ++j) {
+            const double r = isOwn(j) ? 11 : 14;
+            if (Box{px[j] - r, py[j] - r, px[j] + r, py[j] + r}.meets(b)) ok = false;
+          }
+          for (std::size_t k = 0; ok && k < leaders.size(); ++k)
+            if (segMeetsBox(leaders[k], margin)) ok = false;
+          if (ok && pass == 0) {
+            for (const Seg& sg : frontSegs)
+              if (segMeetsBox(sg, margin)) ok = false;
+          }
+          Seg leader{};
+          const bool needsLeader = d > 13.0;
+          if (ok && needsLeader) {
+            // From the disc's edge to the nearest point of the tag.
+            const double nx = std::clamp(t.x, b.x0, b.x1), ny = std::clamp(t.y, b.y0, b.y1);
+            const double dl = std::hypot(nx - t.x, ny - t.y);
+            leader = {t.x + (nx - t.x) / dl * 9, t.y + (ny - t.y) / dl * 9, nx, ny};
+            for (const Seg& o : leaders)
+              if (segsCross(o, leader)) ok = false;
+            for (std::size_t j = 0; ok && j < n; ++j)
+              if (!isOwn(j) && segDist(leader, px[j], py[j]) < 13) ok = false;
+            for (std::size_t k = 0; ok && k < placed.size(); ++k)
+              if (segMeetsBox(leader, placed[k])) ok = false;
+          }
+          if (!ok) continue;
+          best = {b, needsLeader, leader, &t};
+          done = true;
+          break;
+        }
+        if (done) break;
       }
     }
-    Box chosen{x + 14, y - h / 2, x + 14 + w, y + h / 2};
-    bool placed = false;
-    for (const auto& [ox, oy] : offsets) {
-      const Box b{x + ox - 3, y + oy - 2, x + ox + w + 3, y + oy + h + 2};
-      if (b.x0 < left + 2 || b.x1 > right - 2 || b.y0 < top - 20 || b.y1 > bottom - 2) continue;
-      if (std::none_of(taken.begin(), taken.end(), [&](const Box& t) { return t.meets(b); })) {
-        chosen = b;
-        placed = true;
-        break;
+    placed.push_back(best.box);
+    if (best.leader) leaders.push_back(best.seg);
+    drawn.push_back(best);
+  }
+  for (const Drawn& dr : drawn) {
+    if (dr.leader) c.line(dr.seg.x0, dr.seg.y0, dr.seg.x1, dr.seg.y1, kMuted, 1.5);
+  }
+  for (const Drawn& dr : drawn) {
+    const Rgb col = dr.tag->bad ? kBad : kGood;
+    c.fillRect(dr.box.x0, dr.box.y0, dr.box.x1, dr.box.y1, {1, 1, 1}, 0.92);
+    c.line(dr.box.x0, dr.box.y0, dr.box.x1, dr.box.y0, col, 1);
+    c.line(dr.box.x1, dr.box.y0, dr.box.x1, dr.box.y1, col, 1);
+    c.line(dr.box.x1, dr.box.y1, dr.box.x0, dr.box.y1, col, 1);
+    c.line(dr.box.x0, dr.box.y1, dr.box.x0, dr.box.y0, col, 1);
+    c.text(dr.box.x0 + 4, dr.box.y0 + 2, dr.tag->text, col, true);
+  }
+
+  // The key, beside the plot.
+  {
+    double y = top - 6;
+    const double numX = keyX + kMarkerW, labelX = numX + numW + kGap;
+    std::vector<double> valueRight(valueCols);
+    double x = labelX + labelW;
+    for (std::size_t k = 0; k < valueCols; ++k) valueRight[k] = x += kValueGap + valueW[k];
+    c.text(numX + numW - c.textWidth("#", true), y, "#", kMuted, true);
+    c.text(labelX, y, "configuration", kMuted, true);
+    for (std::size_t k = 0; k < valueCols; ++k)
+      c.text(valueRight[k] - valueW[k] + (valueW[k] - c.textWidth(plot.keyColumns[k], true)), y,
+             plot.keyColumns[k], kMuted, true);
+    y += kRowH;
+    c.line(keyX, y - 5, valueCols ? valueRight.back() : labelX + labelW, y - 5, kGrid, 1.5);
+    for (std::size_t i = 0; i < n; ++i) {
+      const PlotPoint& p = plot.points[i];
+      if (i % 2 == 1)
+        c.fillRect(keyX, y - 3, valueCols ? valueRight.back() + 6 : labelX + labelW, y + kRowH - 5,
+                   {0.965, 0.965, 0.975});
+      const double my = y + th / 2 - 1, mx = keyX + 14;
+      if (p.front) c.disc(mx, my, 11, kFront, 3);
+      if (p.bad) {
+        c.disc(mx, my, 7, kBad, 3);
+      } else {
+        c.disc(mx, my, 7, kGood);
       }
+      const Rgb col = p.bad ? kBad : kGood;
+      c.text(numX + numW - c.textWidth(numbers[i], true), y, numbers[i], col, true);
+      c.text(labelX, y, p.label, p.bad ? kBad : kInk, true);
+      for (std::size_t k = 0; k < valueCols && k < p.keyValues.size(); ++k)
+        c.text(valueRight[k] - c.textWidth(p.keyValues[k], true), y, p.keyValues[k], kInk, true);
+      y += kRowH;
     }
-    if (!placed) chosen = {x + 14 - 3, y - h / 2 - 2, x + 14 + w + 3, y + h / 2 + 2};
-    taken.push_back(chosen);
-    if (chosen.y1 < y - 10 || chosen.y0 > y + 10) {
-      const double lx = chosen.x0 > x ? chosen.x0 : chosen.x1;
-      const double ly = chosen.y1 < y ? chosen.y1 - 4 : chosen.y0 + 4;
-      c.line(x, y, lx, ly, kMuted, 1);
-    }
-    c.fillRect(chosen.x0, chosen.y0, chosen.x1, chosen.y1, {1, 1, 1}, 0.85);
-    c.text(chosen.x0 + 3, chosen.y0 + 2, p.label, p.bad ? kBad : kInk, true);
   }
 
   // Legend, under the x axis label.

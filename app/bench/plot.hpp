@@ -1,6 +1,7 @@
 #pragma once
-// A scatter plot rasterized on the CPU and written as PNG: log x, log y, one labelled point per
-// configuration, a front drawn through chosen points. Text comes from Dear ImGui's built-in
+// A scatter plot rasterized on the CPU and written as PNG: log x, log y, one numbered point per
+// configuration, a key beside the plot from number to label and values, a front drawn through
+// chosen points. Text comes from Dear ImGui's built-in
 // font atlas (no GL); stb writes the file. Without those libraries `writeScatterPng` says so.
 
 #include <filesystem>
@@ -14,11 +15,13 @@ struct PlotPoint {
   double x = 0, y = 0;  ///< y == 0 is drawn on the "exact (0)" line below the axis range
   bool bad = false;     ///< drawn in the warning colour (e.g. it tunnels)
   bool front = false;   ///< on the front: joined by the front line
+  std::vector<std::string> keyValues;  ///< shown in the key after the label, one per keyColumns
 };
 
 struct ScatterPlot {
   std::string title, subtitle, xLabel, yLabel;
   std::string legendGood, legendBad, legendFront;
+  std::vector<std::string> keyColumns;  ///< titles of the key's value columns (right-aligned)
   std::vector<PlotPoint> points;
 };
 
