@@ -89,6 +89,7 @@ class Debugger {
   bool paused_ = true;
   double speed_ = 1.0;
   double clock_ = 0.0;  // simulated seconds not yet drawn
+  double frameMs_ = 0.0;  // wall time per frame, smoothed, for the menu bar
   std::uint64_t furthest_ = 0;
   bool follow_ = false;
   bool overlay_ = false;
