@@ -9,25 +9,11 @@
 #include <cstdint>
 #include <string>
 
+#include "tv/sim/rng.hpp"
+
 namespace tv::bench {
 
-/// SplitMix64: the same stream on every platform (std distributions are implementation-defined).
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : s_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, 1).
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-
- private:
-  std::uint64_t s_;
-};
+using sim::Rng;  // the scenes' deterministic source, for the seeded frame times too
 
 struct FrameModel {
   double rate = 60.0;         ///< Hz, the render loop's nominal rate

@@ -10,31 +10,12 @@
 
 #include "tv/error.hpp"
 #include "tv/sim/params.hpp"
+#include "tv/sim/rng.hpp"
 #include "tv/sim/scene.hpp"
 
 namespace tv::sim::detail {
 
-/// SplitMix64: the same numbers on every platform and standard library (the <random>
-/// distributions are implementation-defined, so they could not back golden hashes).
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : s_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, 1), a multiple of 2^-53.
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  /// Uniform in [0, 1), a multiple of 2^-bits: exact in sums with dyadic coordinates.
-  double dyadic(int bits) { return std::ldexp(static_cast<double>(next() >> (64 - bits)), -bits); }
-  /// Uniform in [0, n), n > 0.
-  std::uint64_t below(std::uint64_t n) { return next() % n; }
-
- private:
-  std::uint64_t s_;
-};
+using tv::sim::Rng;
 
 /// Per-scene defaults of the common parameters.
 struct CommonDefaults {
