@@ -108,30 +108,21 @@ MoveResult Mover::move(World& world, ItemId id, Vec2 goal, Filter filter, MoveTr
     trace->clear();
     trace->mover = name_;
   }
-  // Movers made of several world calls (substep pieces, pixel steps) can meet bad input part
-  // way, e.g. a filter answer that is not a response: put the item back, so a throw changes
-  // nothing.
-  const Rect start = world.rect(id);
-  const Remainder remainder = id.index < remainder_.size() ? remainder_[id.index] : Remainder{};
-  try {
-    switch (spec_.kind) {
-      case MoverKind::discrete:
-        return discrete(world, id, goal, filter, trace, collisions_);
-      case MoverKind::sweep:
-        return world.move(id, goal, filter, {BroadPhase::bounds, trace});
-      case MoverKind::substep:
-        return substep(world, id, goal, filter, trace);
-      case MoverKind::continuous:
-        return world.move(id, goal, filter, {BroadPhase::swept, trace});
-      case MoverKind::pixel:
-        return pixel(world, id, goal, filter, trace);
-      case MoverKind::adaptive:
-        return adaptive(world, id, goal, filter, trace);
-    }
-  } catch (...) {
-    world.update(id, start);
-    if (id.index < remainder_.size()) remainder_[id.index] = remainder;
-    throw;
+  // Every policy either changes the world in one final call after all checks (discrete, pixel,
+  // adaptive, world.move) or undoes its pieces on a throw (substep): a throw changes nothing.
+  switch (spec_.kind) {
+    case MoverKind::discrete:
+      return discrete(world, id, goal, filter, trace, collisions_);
+    case MoverKind::sweep:
+      return world.move(id, goal, filter, {BroadPhase::bounds, trace});
+    case MoverKind::substep:
+      return substep(world, id, goal, filter, trace);
+    case MoverKind::continuous:
+      return world.move(id, goal, filter, {BroadPhase::swept, trace});
+    case MoverKind::pixel:
+      return pixel(world, id, goal, filter, trace);
+    case MoverKind::adaptive:
+      return adaptive(world, id, goal, filter, trace);
   }
   return {};
 }
@@ -208,18 +199,25 @@ MoveResult Mover::substep(World& world, ItemId id, Vec2 goal, Filter filter, Mov
   }
   const BroadPhase broad = BroadPhase::bounds;
   Vec2 at = start.position();
-  for (int i = 0; i < n; ++i) {
-    const Vec2 target = at + step;
-    if (trace) trace->substeps.push_back(target);
-    MoveResult r;
-    if (spec_.inner == MoverKind::sweep) {
-      // The world's trace setters overwrite start/goal/final: keep ours.
-      r = world.move(id, target, filter, {broad, inner});
-    } else {
-      r = discrete(world, id, target, filter, inner, pieceCollisions_);
+  // A piece can meet bad input part way (a filter answer that is not a response): put the
+  // item back where the move began.
+  try {
+    for (int i = 0; i < n; ++i) {
+      const Vec2 target = at + step;
+      if (trace) trace->substeps.push_back(target);
+      MoveResult r;
+      if (spec_.inner == MoverKind::sweep) {
+        // The world's trace setters overwrite start/goal/final: keep ours.
+        r = world.move(id, target, filter, {broad, inner});
+      } else {
+        r = discrete(world, id, target, filter, inner, pieceCollisions_);
+      }
+      collisions_.insert(collisions_.end(), r.collisions.begin(), r.collisions.end());
+      at = r.position;
     }
-    collisions_.insert(collisions_.end(), r.collisions.begin(), r.collisions.end());
-    at = r.position;
+  } catch (...) {
+    world.update(id, start);
+    throw;
   }
   if (trace) {
     trace->item = id;
@@ -242,9 +240,10 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
                                 "} is too far from the origin for the world's cell size");
   }
   if (remainder_.size() <= id.index) remainder_.resize(id.index + 1);
+  // Worked on a copy and stored with the final update, so a throw part way keeps the old one.
   // A remainder belongs to one item: a new item in a reused slot starts from zero.
-  if (remainder_[id.index].generation != id.generation) remainder_[id.index] = {{}, id.generation};
-  Vec2& rem = remainder_[id.index].rest;
+  const Remainder& stored = remainder_[id.index];
+  Vec2 rem = stored.generation == id.generation ? stored.rest : Vec2{};
   for (const double pixels : {rem.x + (goal.x - start.x), rem.y + (goal.y - start.y)}) {
     if (!(std::fabs(std::round(pixels)) <= kMaxPixels)) {
       fail("tv::Mover::move", "pixel move of " + formatNumber(pixels) +
@@ -303,6 +302,7 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
     }
   }
   world.update(id, r);
+  remainder_[id.index] = {rem, id.generation};
   if (trace) trace->final = r.position();
   return {r.position(), collisions_};
 }

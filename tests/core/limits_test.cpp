@@ -97,6 +97,20 @@ TEST(Limits, ASubstepMoveThatFailsPartWayPutsTheItemBack) {
   }
 }
 
+//   [p]   |###|    the pixel mover steps 5.3 px towards the wall; at x = 3 it meets it and the
+//   0     10       filter answers 77. The throw must leave the sub-pixel remainder as it was
+//                  (0), not the 0.3 the half-done move had set: a later 0.3 px move stays put.
+TEST(Limits, APixelMoveThatFailsPartWayKeepsTheRemainder) {
+  World w(16);
+  (void)w.add({10, 0, 16, 16});
+  const ItemId p = w.add({0, 0, 8, 8});
+  Mover pixel(tv::parseMover("pixel"));
+  expectRejected(w, {"77"}, [&] {
+    (void)pixel.move(w, p, {5.3, 0}, [](ItemId, ItemId) -> ResponseId { return 77; });
+  });
+  EXPECT_EQ(pixel.move(w, p, {0.3, 0}).position, (Vec2{0, 0})) << "0 + 0.3 rounds to 0";
+}
+
 // A response of the user's that hands back a leg the world cannot sweep (NaN, or too far out)
 // is refused by name before anything moves.
 tv::Leg toNowhere(const tv::Collision& c, Vec2) { return {c.touch, {std::nan(""), 1e300}}; }
