@@ -29,6 +29,18 @@ BatchOutcome Batch::outcome(std::size_t i) const {
 }
 
 void Batch::step(World& world, std::span<const BatchMove> moves, Filter filter, int maxEvents) {
+  if (WorldObserver* o = world.observer(); o && !o->busy()) [[unlikely]] {
+    const WorldObserver::Scope scope(*o);
+    const WorldObserver::Watched watched{filter, *o};
+    try {
+      step(world, moves, Filter(watched), maxEvents);
+    } catch (...) {
+      o->failed();
+      throw;
+    }
+    o->batchStepped(moves, maxEvents, *this);
+    return;
+  }
   // Validate everything before changing anything.
   for (std::size_t i = 0; i < moves.size(); ++i) {
     const Rect r = world.rect(moves[i].item);  // throws on unknown or removed items

@@ -103,6 +103,20 @@ Mover::Mover(MoverSpec spec) : spec_(spec), name_(spec.name()) {
 }
 
 MoveResult Mover::move(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
+  if (WorldObserver* o = world.observer(); o && !o->busy()) [[unlikely]] {
+    // One recorded call: the world calls this policy makes are replayed by making it again.
+    const WorldObserver::Scope scope(*o);
+    const WorldObserver::Watched watched{filter, *o};
+    try {
+      const Rect start = world.rect(id);
+      const MoveResult r = move(world, id, goal, Filter(watched), trace);
+      o->moverMoved(*this, id, start, goal, r);
+      return r;
+    } catch (...) {
+      o->failed();
+      throw;
+    }
+  }
   trace = activeTrace(trace);
   if (trace) {
     trace->clear();

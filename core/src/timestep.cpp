@@ -43,6 +43,7 @@ int FixedStep::advance(double frameTime) {
     ++n;
   }
   ticks_ += static_cast<std::uint64_t>(n);
+  if (observer_) observer_->advanced(frameTime, n);
   return n;
 }
 

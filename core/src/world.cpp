@@ -38,6 +38,26 @@ constexpr std::string_view kAdd = "tv::World::add";
 constexpr std::string_view kUpdate = "tv::World::update";
 constexpr std::string_view kMove = "tv::World::move";
 
+// Runs `call` as an outermost observed call: what it calls inside is part of it, user code's
+// answers are reported as they come, and `report` sees the result once the call has succeeded.
+template <class Call, class Report>
+decltype(auto) observed(WorldObserver& o, Call&& call, Report&& report) {
+  const WorldObserver::Scope scope(o);
+  try {
+    if constexpr (std::is_void_v<decltype(call())>) {
+      call();
+      report();
+    } else {
+      decltype(auto) result = call();
+      report(result);
+      return result;
+    }
+  } catch (...) {
+    o.failed();
+    throw;
+  }
+}
+
 }  // namespace
 
 World::World(double cellSize) : grid_(1.0) {
@@ -97,6 +117,10 @@ void World::validateOptions(const MoveOptions& o, std::string_view where) const 
 // [SECTION] items -------------------------------------------------------------------------------
 
 ItemId World::add(const Rect& r) {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    return observed(*observer_, [&] { return add(r); },
+                    [&](ItemId id) { observer_->added(id, r); });
+  }
   validateRect(r, kAdd);
   std::uint32_t index;
   if (!freeSlots_.empty()) {
@@ -120,6 +144,9 @@ ItemId World::add(const Rect& r) {
 }
 
 void World::remove(ItemId id) {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    return observed(*observer_, [&] { remove(id); }, [&] { observer_->removed(id); });
+  }
   slot(id, "tv::World::remove");
   Slot& s = slots_[id.index];
   eraseCells(id.index);
@@ -131,6 +158,9 @@ void World::remove(ItemId id) {
 }
 
 void World::update(ItemId id, const Rect& r) {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    return observed(*observer_, [&] { update(id, r); }, [&] { observer_->updated(id, r); });
+  }
   slot(id, kUpdate);
   validateRect(r, kUpdate);
   place(id.index, r);
@@ -527,6 +557,11 @@ MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filte
 }
 
 MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& options) const {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    const WorldObserver::Watched watched{filter, *observer_};
+    return observed(*observer_, [&] { return check(id, goal, Filter(watched), options); },
+                    [&](const MoveResult& r) { observer_->checked(id, goal, options, r); });
+  }
   const Slot& s = slot(id, "tv::World::check");
   validateGoal(s.rect, goal, "tv::World::check");
   validateOptions(options, "tv::World::check");
@@ -534,6 +569,11 @@ MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& 
 }
 
 MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& options) {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    const WorldObserver::Watched watched{filter, *observer_};
+    return observed(*observer_, [&] { return move(id, goal, Filter(watched), options); },
+                    [&](const MoveResult& r) { observer_->moved(id, goal, options, r); });
+  }
   const Slot& s = slot(id, kMove);
   validateGoal(s.rect, goal, kMove);
   validateOptions(options, kMove);
@@ -544,6 +584,11 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
 
 MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
                           const MoveOptions& options) const {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    const WorldObserver::Watched watched{filter, *observer_};
+    return observed(*observer_, [&] { return project(r, goal, Filter(watched), options); },
+                    [&](const MoveResult& m) { observer_->projected(r, goal, options, m); });
+  }
   validateRect(r, "tv::World::project");
   validateGoal(r, goal, "tv::World::project");
   validateOptions(options, "tv::World::project");
@@ -561,7 +606,9 @@ ResponseId World::addResponse(std::string name, ResponseFn fn) {
   }
   if (responses_.size() >= response::ignore) fail(where, "too many responses");
   responses_.push_back({std::move(name), fn});
-  return static_cast<ResponseId>(responses_.size() - 1);
+  const auto id = static_cast<ResponseId>(responses_.size() - 1);
+  if (observer_ && !observer_->busy()) observer_->responseAdded(responses_.back().name, id);
+  return id;
 }
 
 std::string_view World::responseName(ResponseId id) const {
@@ -576,7 +623,11 @@ Leg World::respond(const Collision& c, Vec2 goal) const {
   if (c.response >= responses_.size()) {
     fail("tv::World::respond", "response " + std::to_string(c.response) + " is not registered");
   }
-  return responses_[c.response].fn(c, goal);
+  const Leg leg = responses_[c.response].fn(c, goal);
+  if (observer_ && c.response >= response::kBuiltinCount) [[unlikely]] {
+    observer_->responded(c, goal, leg);
+  }
+  return leg;
 }
 
 ResponseId World::responseId(std::string_view name) const {
@@ -590,6 +641,10 @@ ResponseId World::responseId(std::string_view name) const {
 // [SECTION] queries -----------------------------------------------------------------------------
 
 void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) const {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    return observed(*observer_, [&] { queryRect(r, out, skip); },
+                    [&] { observer_->queriedRect(r, skip, out); });
+  }
   constexpr std::string_view where = "tv::World::queryRect";
   requireFinite(where, "x", r.x);
   requireFinite(where, "y", r.y);
@@ -618,6 +673,11 @@ std::vector<ItemId> World::queryRect(const Rect& r, ItemId skip) const {
 }
 
 bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    const WorldObserver::Watched watched{filter, *observer_};
+    return observed(*observer_, [&] { return anyOverlap(r, skip, Filter(watched)); },
+                    [&](bool any) { observer_->askedOverlap(r, skip, any); });
+  }
   if (!isFinite(r) || !grid_.fits(r)) {
     fail("tv::World::anyOverlap", "rect " + describe(r) + " is not finite or too far out");
   }
@@ -632,6 +692,10 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
 }
 
 std::vector<ItemId> World::queryPoint(Vec2 p) const {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    return observed(*observer_, [&] { return queryPoint(p); },
+                    [&](const std::vector<ItemId>& found) { observer_->queriedPoint(p, found); });
+  }
   constexpr std::string_view where = "tv::World::queryPoint";
   requireFinite(where, "x", p.x);
   requireFinite(where, "y", p.y);
@@ -654,6 +718,12 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
 }
 
 std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
+  if (observer_ && !observer_->busy()) [[unlikely]] {
+    return observed(*observer_, [&] { return querySegment(a, b); },
+                    [&](const std::vector<SegmentHit>& hits) {
+                      observer_->queriedSegment(a, b, hits);
+                    });
+  }
   constexpr std::string_view where = "tv::World::querySegment";
   requireFinite(where, "a.x", a.x);
   requireFinite(where, "a.y", a.y);
@@ -700,6 +770,112 @@ std::uint64_t World::stateHash() const {
     feed(std::bit_cast<std::uint64_t>(r.h));
   });
   return h;
+}
+
+}  // namespace tv
+
+// [SECTION] state and recording -----------------------------------------------------------------
+
+namespace tv {
+
+WorldState World::state() const {
+  WorldState s;
+  s.cellSize = grid_.cellSize();
+  s.slots.reserve(slots_.size());
+  for (const Slot& slot : slots_) {
+    s.slots.push_back({slot.alive ? slot.rect : Rect{}, slot.alive ? slot.order : 0,
+                       slot.generation, slot.alive});
+  }
+  s.freeSlots = freeSlots_;
+  s.nextOrder = nextOrder_;
+  for (const NamedResponse& r : responses_) s.responses.push_back(r.name);
+  return s;
+}
+
+void World::restore(const WorldState& s) {
+  constexpr std::string_view where = "tv::World::restore";
+  if (std::bit_cast<std::uint64_t>(s.cellSize) != std::bit_cast<std::uint64_t>(grid_.cellSize())) {
+    fail(where, "cellSize " + formatNumber(s.cellSize) + " differs from this world's " +
+                    formatNumber(grid_.cellSize()));
+  }
+  if (s.responses.size() != responses_.size()) {
+    fail(where, "the state has " + std::to_string(s.responses.size()) +
+                    " responses, this world " + std::to_string(responses_.size()) +
+                    " (register the user responses first, in the same order)");
+  }
+  for (std::size_t i = 0; i < responses_.size(); ++i) {
+    if (s.responses[i] != responses_[i].name) {
+      fail(where, "response " + std::to_string(i) + " is '" + s.responses[i] + "' in the state, '" +
+                      responses_[i].name + "' in this world");
+    }
+  }
+  if (s.slots.size() >= Entry::kShared) fail(where, "more than 2^31 slots");
+  // Every check before any change: a state may come from an untrusted file.
+  std::vector<std::uint64_t> orders;
+  for (std::size_t i = 0; i < s.slots.size(); ++i) {
+    const WorldState::Slot& slot = s.slots[i];
+    if (!slot.alive) continue;
+    try {
+      validateRect(slot.rect, where);
+    } catch (const Error& e) {
+      fail(where, "slot " + std::to_string(i) + ": " + e.what());
+    }
+    if (slot.order >= s.nextOrder) {
+      fail(where, "slot " + std::to_string(i) + " has add order " + std::to_string(slot.order) +
+                      ", not below nextOrder " + std::to_string(s.nextOrder));
+    }
+    orders.push_back(slot.order);
+  }
+  std::sort(orders.begin(), orders.end());
+  if (std::adjacent_find(orders.begin(), orders.end()) != orders.end()) {
+    fail(where, "two items share an add order");
+  }
+  std::vector<bool> listed(s.slots.size(), false);
+  for (const std::uint32_t k : s.freeSlots) {
+    if (k >= s.slots.size() || s.slots[k].alive || listed[k]) {
+      fail(where, "free slot " + std::to_string(k) + " is out of range, alive or listed twice");
+    }
+    listed[k] = true;
+  }
+
+  World fresh(grid_.cellSize());
+  fresh.responses_ = responses_;
+  fresh.slots_.resize(s.slots.size());
+  fresh.stamp_.assign(s.slots.size(), 0);
+  for (std::uint32_t i = 0; i < s.slots.size(); ++i) {
+    const WorldState::Slot& in = s.slots[i];
+    Slot& out = fresh.slots_[i];
+    out.generation = in.generation;
+    if (!in.alive) continue;
+    out.rect = in.rect;
+    out.order = in.order;
+    out.alive = true;
+    out.cells = fresh.grid_.cellsOf(in.rect);
+    fresh.insertCells(i, in.rect, out.cells);
+    fresh.addExtent(in.rect);
+    ++fresh.count_;
+  }
+  fresh.freeSlots_ = s.freeSlots;
+  fresh.nextOrder_ = s.nextOrder;
+  *this = std::move(fresh);  // the observer link stays this world's
+}
+
+void World::attach(WorldObserver& observer) {
+  detach();
+  observer_.set(&observer);
+  try {
+    observer.attached(*this);
+  } catch (...) {
+    observer_.set(nullptr);
+    throw;
+  }
+}
+
+void World::detach() {
+  WorldObserver* o = observer_.get();
+  if (o == nullptr) return;
+  observer_.set(nullptr);
+  o->detached(*this);
 }
 
 }  // namespace tv

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "tv/geometry.hpp"
+#include "tv/observer.hpp"
 
 namespace tv {
 
@@ -30,6 +31,8 @@ class FixedStep {
   [[nodiscard]] std::uint64_t frames() const { return frames_; }
   /// Frames longer than maxFrameTime, whose excess was dropped.
   [[nodiscard]] std::uint64_t clampedFrames() const { return clamped_; }
+  /// Reports every advance to `observer` (a recorder marks a frame there); null to stop.
+  void attach(WorldObserver* observer) { observer_ = observer; }
 
  private:
   double step_;
@@ -38,6 +41,7 @@ class FixedStep {
   std::uint64_t ticks_ = 0;
   std::uint64_t frames_ = 0;
   std::uint64_t clamped_ = 0;
+  WorldObserver* observer_ = nullptr;
 };
 
 /// Render position between two physics states.

@@ -24,6 +24,7 @@
 #include "tv/geometry.hpp"
 #include "tv/grid.hpp"
 #include "tv/item.hpp"
+#include "tv/observer.hpp"
 #include "tv/response.hpp"
 #include "tv/sweep.hpp"
 #include "tv/trace.hpp"
@@ -48,6 +49,23 @@ struct MoveResult {
   Vec2 position;  ///< where the item ends (its goal if nothing was hit)
   /// Collisions in the order the responses ran; valid until the next call on the world.
   std::span<const Collision> collisions;
+};
+
+/// Everything that decides how a world behaves next: its items with their handles and add
+/// order, the free slots (what the next add returns) and the responses' names. What a recording
+/// opens with, and what a replay seeks to.
+struct WorldState {
+  struct Slot {
+    Rect rect;                     ///< alive slots only
+    std::uint64_t order = 0;       ///< add order, alive slots only
+    std::uint32_t generation = 0;  ///< the live item's, or the next one for a free slot
+    bool alive = false;
+  };
+  double cellSize = 64.0;
+  std::vector<Slot> slots;               ///< by slot index
+  std::vector<std::uint32_t> freeSlots;  ///< reused from the back; a dead slot not listed is retired
+  std::uint64_t nextOrder = 0;           ///< add order of the next add
+  std::vector<std::string> responses;    ///< response names by ResponseId, built-ins first
 };
 
 /// An item whose open interior meets a query segment, with where the segment enters and exits.
@@ -137,6 +155,20 @@ class World {
   /// Hash of every item (handle, add order, rect bits), the free slots and next add order (what
   /// the next add returns), and the cell size: two worlds that compare equal here behave the same.
   [[nodiscard]] std::uint64_t stateHash() const;
+
+  // -- state and recording ------------------------------------------------------------------
+  [[nodiscard]] WorldState state() const;
+  /// Replaces every item by those of `s` (same handles, add orders and free slots), so that this
+  /// world then behaves as the one `s` was taken from. `s.cellSize` must equal this world's and
+  /// `s.responses` the names registered here, in order (register user responses first). `s` may
+  /// come from a file: it is checked whole (finite rects, slot counts, free-slot list, orders)
+  /// and refused with a tv::Error naming what is wrong, changing nothing.
+  void restore(const WorldState& s);
+  /// Reports every call from now on to `observer` (which first sees the world's current state),
+  /// until `detach`. One observer at a time: attaching another detaches the first.
+  void attach(WorldObserver& observer);
+  void detach();
+  [[nodiscard]] WorldObserver* observer() const { return observer_.get(); }
 
  private:
   static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
@@ -228,6 +260,22 @@ class World {
     ResponseFn fn;
   };
   std::vector<NamedResponse> responses_;
+  // A copy of a world is a new world: it reports to no one.
+  class ObserverLink {
+   public:
+    ObserverLink() = default;
+    ObserverLink(const ObserverLink&) {}
+    ObserverLink& operator=(const ObserverLink&) { return *this; }
+    WorldObserver* get() const { return p_; }
+    void set(WorldObserver* p) { p_ = p; }
+    WorldObserver* operator->() const { return p_; }
+    WorldObserver& operator*() const { return *p_; }
+    explicit operator bool() const { return p_ != nullptr; }
+
+   private:
+    WorldObserver* p_ = nullptr;
+  };
+  ObserverLink observer_;
 
   // Scratch reused by every move (hence `mutable`: check and project are logically const).
   mutable std::vector<std::uint32_t> stamp_;

@@ -1,0 +1,105 @@
+#pragma once
+/// The hook through which a recorder (tv::Recorder, in tv::record) sees what a game asks of a
+/// World and what it got back. Core does no I/O: it only calls these functions. Detached, each
+/// public call pays one predictable branch on a null pointer.
+///
+/// What is reported:
+/// - the outermost call only: a Mover::move or Batch::step is one call, and the World calls it
+///   makes inside are part of it (replaying the outer call makes them again);
+/// - after the call succeeded, with its inputs and results (a call that throws changes nothing
+///   and is not reported; `failed` says the answers gathered for it are void);
+/// - user code's answers as they are given, inside the call: the filter's response for each
+///   pair it is asked about, and the leg each user response (id >= response::kBuiltinCount)
+///   returned — the two things a replay cannot recompute.
+/// An observer must not call back into the world it observes.
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "tv/geometry.hpp"
+#include "tv/item.hpp"
+#include "tv/response.hpp"
+
+namespace tv {
+
+class World;
+class Mover;
+class Batch;
+struct BatchMove;
+struct MoveOptions;
+struct MoveResult;
+struct SegmentHit;
+
+class WorldObserver {
+ public:
+  virtual ~WorldObserver() = default;
+
+  /// `World::attach`: the world as it is now (a recording opens with its snapshot).
+  virtual void attached(const World& world) = 0;
+  virtual void detached(const World& world) = 0;
+
+  // -- outermost calls, once they have succeeded -------------------------------------------------
+  virtual void added(ItemId id, const Rect& r) = 0;
+  virtual void removed(ItemId id) = 0;
+  /// Both `update` overloads (the position one reports the whole rect).
+  virtual void updated(ItemId id, const Rect& r) = 0;
+  virtual void moved(ItemId id, Vec2 goal, const MoveOptions& o, const MoveResult& r) = 0;
+  virtual void checked(ItemId id, Vec2 goal, const MoveOptions& o, const MoveResult& r) = 0;
+  virtual void projected(const Rect& rect, Vec2 goal, const MoveOptions& o,
+                         const MoveResult& r) = 0;
+  virtual void queriedRect(const Rect& r, ItemId skip, std::span<const ItemId> found) = 0;
+  virtual void queriedPoint(Vec2 p, std::span<const ItemId> found) = 0;
+  virtual void queriedSegment(Vec2 a, Vec2 b, std::span<const SegmentHit> hits) = 0;
+  virtual void askedOverlap(const Rect& r, ItemId skip, bool any) = 0;
+  virtual void responseAdded(std::string_view name, ResponseId id) = 0;
+  /// `mover.move(world, id, goal, ...)`; `start` is the item's rect before the move.
+  virtual void moverMoved(const Mover& mover, ItemId id, const Rect& start, Vec2 goal,
+                          const MoveResult& r) = 0;
+  /// `batch.step(world, moves, ...)`; outcomes are read from `batch`.
+  virtual void batchStepped(std::span<const BatchMove> moves, int maxEvents,
+                            const Batch& batch) = 0;
+
+  /// An attached FixedStep's `advance(frameTime)` returned `ticks`: one rendered frame begins.
+  virtual void advanced(double frameTime, int ticks) {
+    (void)frameTime;
+    (void)ticks;
+  }
+
+  // -- user code's answers, during the call --------------------------------------------------
+  virtual void filtered(ItemId item, ItemId other, ResponseId answer) = 0;
+  virtual void responded(const Collision& c, Vec2 goal, const Leg& leg) = 0;
+  /// The outermost call threw: forget the answers reported since it began.
+  virtual void failed() = 0;
+
+  /// True inside an outermost call: the calls it makes are not reported on their own.
+  [[nodiscard]] bool busy() const { return depth_ > 0; }
+
+  /// Marks an outermost call (used by World, Mover and Batch).
+  class Scope {
+   public:
+    explicit Scope(WorldObserver& o) : o_(o) { ++o_.depth_; }
+    ~Scope() { --o_.depth_; }
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+   private:
+    WorldObserver& o_;
+  };
+
+  /// Asks a filter and reports its answer; wrap one in a Filter for the call's duration.
+  struct Watched {
+    const Filter& filter;
+    WorldObserver& observer;
+    ResponseId operator()(ItemId item, ItemId other) const {
+      const ResponseId r = filter(item, other);
+      observer.filtered(item, other, r);
+      return r;
+    }
+  };
+
+ private:
+  int depth_ = 0;
+};
+
+}  // namespace tv
