@@ -1,0 +1,158 @@
+#pragma once
+/// Replaying a recording (`.tvrec`, core/record/FORMAT.md): open it, rebuild the world at any
+/// frame from the nearest keyframe, re-execute each recorded call on that world (with tracing,
+/// for the debugger) and compare its result with the recorded one bit for bit. The first
+/// difference is a divergence. With `ReplayOptions::mover` the recorded moves are made again by
+/// another mover instead (what-if): the runs then differ on purpose, and `whatIf` says where.
+///
+/// A file is untrusted: every malformed, truncated, tampered or hostile file gets a tv::Error
+/// naming the byte offset, the frame and what was wrong — never a crash, never an allocation
+/// the file's own size does not justify. A file cut inside a frame replays up to its last whole
+/// frame, with a warning.
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tv/mover.hpp"
+#include "tv/trace.hpp"
+#include "tv/world.hpp"
+
+namespace tv {
+
+/// What a recorded call was.
+enum class CallKind : std::uint8_t {
+  add, remove, update, move, check, project, queryRect, queryPoint, querySegment, anyOverlap,
+  addResponse, moverMove, batchStep, label, advance,
+};
+[[nodiscard]] std::string_view callKindName(CallKind k);
+
+/// One recorded call, as listed in the debugger's frame view.
+struct CallInfo {
+  CallKind kind = CallKind::move;
+  std::uint64_t frame = 0;
+  std::uint32_t index = 0;   ///< within its frame
+  ItemId item;               ///< the item it concerns (invalid for project and the queries)
+  std::uint64_t offset = 0;  ///< byte offset of its record in the file
+  Rect start;                ///< moves: the item before the call
+  Vec2 goal;                 ///< moves: what was asked
+  Vec2 position;             ///< moves: where the recording says it ended
+  std::uint32_t hits = 0;    ///< moves: collisions recorded; queries: items found
+  std::string mover;         ///< moverMove: the mover's name
+  std::string summary;       ///< one line: "move player (12, 40) -> (15, 40): 2 hits"
+};
+
+/// An item that appears in the recording, for the outliner.
+struct RecordedItem {
+  ItemId id;
+  std::string label;     ///< the game's label, or "item <index>.<generation>"
+  std::string category;  ///< the game's category, or empty
+  std::uint64_t firstFrame = 0, lastFrame = 0;
+  std::uint64_t moves = 0, hits = 0;
+  double maxSpeed = 0.0;  ///< longest single move, in world units
+  std::uint64_t endedOverlapping = 0;  ///< moves that ended overlapping a solid (not ignored)
+};
+
+/// The first call whose result differs from the recording.
+struct Divergence {
+  std::uint64_t frame = 0;
+  std::uint32_t call = 0;
+  CallKind kind = CallKind::move;
+  std::string item;      ///< label of the item concerned
+  std::string what;      ///< "position", "collision 1 ti", "queryRect result"...
+  std::string expected;  ///< as recorded
+  std::string got;       ///< as replayed
+  std::uint64_t offset = 0;
+  [[nodiscard]] std::string report() const;  ///< the whole thing on a few lines
+};
+
+struct ReplayOptions {
+  /// What-if: every recorded move (World::move and Mover::move) is made by this mover instead.
+  std::optional<MoverSpec> mover;
+  /// What-if: also treat each recorded `update` of an item that changes only its position as a
+  /// move to that position (games that move bodies themselves, x += v*dt, then push out).
+  bool updatesAsMoves = false;
+  /// Stop decoding at the first frame whose chunk is bad instead of throwing (the debugger
+  /// opens what can be opened and shows the error); truncation is always tolerated.
+  bool tolerant = false;
+};
+
+/// A move whose what-if outcome differs from the recorded one.
+struct MoveDifference {
+  std::uint64_t frame = 0;
+  std::uint32_t call = 0;
+  ItemId item;
+  Vec2 recorded, got;  ///< where each run ended
+  double distance = 0.0;
+  bool tunnelled = false;    ///< passed through a solid the recorded filter does not ignore
+  bool overlapping = false;  ///< ended overlapping such a solid
+};
+
+struct WhatIfReport {
+  std::uint64_t moves = 0;
+  std::vector<MoveDifference> differences;  ///< every move that ended elsewhere, in order
+  std::optional<std::uint64_t> firstDifferentFrame;
+  /// First frame where a re-run body is more than `farAway` from where the recording goes on:
+  /// from there the recorded goals (the game's reactions) no longer make sense.
+  std::optional<std::uint64_t> firstImplausibleFrame;
+  std::uint64_t tunnelled = 0, overlapping = 0;
+};
+
+class Replay {
+ public:
+  static constexpr std::uint32_t kEndOfFrame = 0xFFFFFFFFu;
+
+  /// Reads and indexes a recording (header, frame chunks with checksums, keyframes).
+  [[nodiscard]] static Replay open(const std::string& path, ReplayOptions options = {});
+  [[nodiscard]] static Replay fromBytes(std::vector<std::uint8_t> bytes,
+                                        ReplayOptions options = {});
+  Replay(Replay&&) noexcept;
+  Replay& operator=(Replay&&) noexcept;
+  ~Replay();
+
+  // -- what is in it ---------------------------------------------------------------------------
+  [[nodiscard]] std::uint64_t frames() const;
+  [[nodiscard]] double cellSize() const;
+  [[nodiscard]] std::uint64_t fileSize() const;
+  [[nodiscard]] std::span<const std::string> warnings() const;
+  [[nodiscard]] std::span<const RecordedItem> items() const;
+  /// The label of an item ("player"), or "item <index>.<generation>" when it has none.
+  [[nodiscard]] std::string label(ItemId id) const;
+  [[nodiscard]] std::string category(ItemId id) const;
+  /// The calls recorded in a frame, in order.
+  [[nodiscard]] std::vector<CallInfo> calls(std::uint64_t frame) const;
+  [[nodiscard]] const ReplayOptions& options() const;
+
+  // -- where it is -----------------------------------------------------------------------------
+  /// Puts the world just before call `call` of `frame` (kEndOfFrame: after the frame's last
+  /// call). Starts from the nearest keyframe at or before it: O(keyframe interval).
+  void seek(std::uint64_t frame, std::uint32_t call = kEndOfFrame);
+  [[nodiscard]] std::uint64_t frame() const;
+  [[nodiscard]] std::uint32_t call() const;  ///< index of the next call in frame()
+  [[nodiscard]] const World& world() const;
+
+  /// Re-executes the next call (tracing it into `trace` when given) and compares its result
+  /// with the recording. Returns the divergence, if this call diverges. Moves to the next
+  /// frame at a frame's end.
+  std::optional<Divergence> step(MoveTrace* trace = nullptr);
+
+  // -- whole-file checks -----------------------------------------------------------------------
+  /// Replays everything from the start; the first divergence, if any. `progress(frame)` may
+  /// return false to cancel (then the result is empty and `cancelled()` true).
+  [[nodiscard]] std::optional<Divergence> validate(
+      const std::function<bool(std::uint64_t)>& progress = {});
+  [[nodiscard]] bool cancelled() const;
+  /// What-if (options().mover set): the whole run against the recording.
+  [[nodiscard]] WhatIfReport whatIf(double farAway = 64.0);
+
+ private:
+  struct Impl;
+  explicit Replay(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tv
