@@ -6,6 +6,7 @@
 #include <cstring>
 #include <utility>
 
+#include "hit_order.hpp"
 #include "tv/error.hpp"
 
 namespace tv {
@@ -379,8 +380,8 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
 
 namespace {
 
-// Collision order: overlaps (deepest first, ti is minus the area), then ti, then ordinary hits
-// before exact corner hits, then add order.
+// Collision order: overlaps (deepest first, ti is minus the area), then the exact time of
+// impact, then ordinary hits before exact corner hits, then add order.
 // The separating-axis test of a diagonal leg against an obstacle, along the leg's normal.
 class Slant {
  public:
@@ -412,9 +413,16 @@ class Slant {
   double lo_ = 0.0, hi_ = 0.0;
 };
 
+// Two hits are ordered on their exact times of impact, not the rounded ti: faces less than a
+// rounding apart share a ti, and the farther one's touch lies inside the nearer face.
 template <class EarlierAdded>
-bool before(const Sweep& a, const Sweep& b, EarlierAdded aWasAddedFirst) {
-  if (a.ti != b.ti) return a.ti < b.ti;
+bool before(const Rect& r, Vec2 goal, const Sweep& a, const Rect& ra, const Sweep& b,
+            const Rect& rb, EarlierAdded aWasAddedFirst) {
+  if (a.kind == SweepKind::hit && b.kind == SweepKind::hit) {
+    if (const int c = detail::compareHitTimes(r, goal, a, ra, b, rb); c != 0) return c < 0;
+  } else if (a.ti != b.ti) {
+    return a.ti < b.ti;
+  }
   if (a.corner != b.corner) return !a.corner;
   return aWasAddedFirst();
 }
@@ -450,7 +458,7 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
                      if (s.kind == SweepKind::miss) return;
                      // Add order breaks exact ties only, so the slots (a cache miss each) are read
                      // only then.
-                     if (found && !before(s, lead, [&] {
+                     if (found && !before(r, goal, s, otherRect, lead, leadRect, [&] {
                            return slots_[other].order < slots_[leadId.index].order;
                          })) {
                        return;

@@ -7,8 +7,10 @@
 /// - a move never passes through anything its filter does not ignore or cross, at any speed;
 /// - contact is exact: after touch or slide the item's edge equals the obstacle's edge;
 /// - sliding along floors and walls made of separate tiles never catches on a seam;
-/// - collisions are ordered by ti, then ordinary hits before exact corner hits, then by the
-///   order in which items were added — never by address or hash order;
+/// - collisions are ordered by their exact time of impact (compared without rounding, so of
+///   two faces an ulp apart the nearer comes first even when their rounded ti are equal), then
+///   ordinary hits before exact corner hits, then by the order in which items were added —
+///   never by address or hash order;
 /// - the steady-state move path allocates nothing (buffers are kept and reused);
 /// - bad input throws tv::Error naming the value and leaves the world unchanged.
 /// Not thread-safe: queries reuse internal scratch buffers.
