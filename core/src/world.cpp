@@ -104,11 +104,27 @@ ItemId World::add(const Rect& r) {
     index = freeSlots_.back();
     freeSlots_.pop_back();
   } else {
-    if (slots_.size() >= Entry::kShared) fail(kAdd, "the world holds 2^31 items already");
-    index = static_cast<std::uint32_t>(slots_.size());
-    slots_.emplace_back();
-    stamp_.push_back(0);
+    index = newSlot();
   }
+  return fill(index, r);
+}
+
+ItemId World::addAtGenerationForTesting(const Rect& r, std::uint32_t generation) {
+  validateRect(r, kAdd);
+  const std::uint32_t index = newSlot();
+  slots_[index].generation = generation;
+  return fill(index, r);
+}
+
+std::uint32_t World::newSlot() {
+  if (slots_.size() >= Entry::kShared) fail(kAdd, "the world holds 2^31 items already");
+  const auto index = static_cast<std::uint32_t>(slots_.size());
+  slots_.emplace_back();
+  stamp_.push_back(0);
+  return index;
+}
+
+ItemId World::fill(std::uint32_t index, const Rect& r) {
   Slot& s = slots_[index];
   s.rect = r;
   s.cells = grid_.cellsOf(r);
@@ -126,8 +142,12 @@ void World::remove(ItemId id) {
   eraseCells(id.index);
   dropExtent(s.rect);
   s.alive = false;
-  ++s.generation;
-  freeSlots_.push_back(id.index);
+  // A generation that wrapped would make the oldest handles of this slot valid again: a slot
+  // whose generations are used up is retired (never reused) instead.
+  if (s.generation != kLastGeneration) {
+    ++s.generation;
+    freeSlots_.push_back(id.index);
+  }
   --count_;
 }
 
