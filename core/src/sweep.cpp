@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "exact_time.hpp"
+#include "hit_order.hpp"
 
 namespace tv {
 
@@ -125,5 +126,34 @@ SegmentClip clipSegment(Vec2 a, Vec2 b, const Rect& r) {
   if (detail::compare(t0, t1) >= 0) return {};
   return {true, t0.value(), t1.value()};
 }
+
+namespace detail {
+
+namespace {
+
+// A hit's time of impact as the fraction (n0 − n1) / (d0 − d1) that sweepRect compared: the
+// gap to the face its normal names over the distance the near edge travels.
+struct Impact {
+  double n0, n1, d0, d1;
+};
+
+Impact impact(const Rect& a, Vec2 goal, const Sweep& s, const Rect& o) {
+  const Rect g = a.at(goal);
+  if (s.normal.x < 0) return {o.x, a.right(), g.right(), a.right()};
+  if (s.normal.x > 0) return {a.x, o.right(), a.x, g.x};
+  if (s.normal.y < 0) return {o.y, a.bottom(), g.bottom(), a.bottom()};
+  return {a.y, o.bottom(), a.y, g.y};
+}
+
+}  // namespace
+
+int compareHitTimes(const Rect& mover, Vec2 goal, const Sweep& a, const Rect& oa, const Sweep& b,
+                    const Rect& ob) {
+  const Impact p = impact(mover, goal, a, oa), q = impact(mover, goal, b, ob);
+  // na/da < nb/db with positive denominators: na·db < nb·da.
+  return compareDifferenceProducts(p.n0, p.n1, q.d0, q.d1, q.n0, q.n1, p.d0, p.d1);
+}
+
+}  // namespace detail
 
 }  // namespace tv

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <utility>
 
+#include "hit_order.hpp"
 #include "tv/error.hpp"
 
 namespace tv {
@@ -127,11 +128,27 @@ ItemId World::add(const Rect& r) {
     index = freeSlots_.back();
     freeSlots_.pop_back();
   } else {
-    if (slots_.size() >= Entry::kShared) fail(kAdd, "the world holds 2^31 items already");
-    index = static_cast<std::uint32_t>(slots_.size());
-    slots_.emplace_back();
-    stamp_.push_back(0);
+    index = newSlot();
   }
+  return fill(index, r);
+}
+
+ItemId World::addAtGenerationForTesting(const Rect& r, std::uint32_t generation) {
+  validateRect(r, kAdd);
+  const std::uint32_t index = newSlot();
+  slots_[index].generation = generation;
+  return fill(index, r);
+}
+
+std::uint32_t World::newSlot() {
+  if (slots_.size() >= Entry::kShared) fail(kAdd, "the world holds 2^31 items already");
+  const auto index = static_cast<std::uint32_t>(slots_.size());
+  slots_.emplace_back();
+  stamp_.push_back(0);
+  return index;
+}
+
+ItemId World::fill(std::uint32_t index, const Rect& r) {
   Slot& s = slots_[index];
   s.rect = r;
   s.cells = grid_.cellsOf(r);
@@ -152,8 +169,12 @@ void World::remove(ItemId id) {
   eraseCells(id.index);
   dropExtent(s.rect);
   s.alive = false;
-  ++s.generation;
-  freeSlots_.push_back(id.index);
+  // A generation that wrapped would make the oldest handles of this slot valid again: a slot
+  // whose generations are used up is retired (never reused) instead.
+  if (s.generation != kLastGeneration) {
+    ++s.generation;
+    freeSlots_.push_back(id.index);
+  }
   --count_;
 }
 
@@ -409,8 +430,8 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
 
 namespace {
 
-// Collision order: overlaps (deepest first, ti is minus the area), then ti, then ordinary hits
-// before exact corner hits, then add order.
+// Collision order: overlaps (deepest first, ti is minus the area), then the exact time of
+// impact, then ordinary hits before exact corner hits, then add order.
 // The separating-axis test of a diagonal leg against an obstacle, along the leg's normal.
 class Slant {
  public:
@@ -442,9 +463,16 @@ class Slant {
   double lo_ = 0.0, hi_ = 0.0;
 };
 
+// Two hits are ordered on their exact times of impact, not the rounded ti: faces less than a
+// rounding apart share a ti, and the farther one's touch lies inside the nearer face.
 template <class EarlierAdded>
-bool before(const Sweep& a, const Sweep& b, EarlierAdded aWasAddedFirst) {
-  if (a.ti != b.ti) return a.ti < b.ti;
+bool before(const Rect& r, Vec2 goal, const Sweep& a, const Rect& ra, const Sweep& b,
+            const Rect& rb, EarlierAdded aWasAddedFirst) {
+  if (a.kind == SweepKind::hit && b.kind == SweepKind::hit) {
+    if (const int c = detail::compareHitTimes(r, goal, a, ra, b, rb); c != 0) return c < 0;
+  } else if (a.ti != b.ti) {
+    return a.ti < b.ti;
+  }
   if (a.corner != b.corner) return !a.corner;
   return aWasAddedFirst();
 }
@@ -480,7 +508,7 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
                      if (s.kind == SweepKind::miss) return;
                      // Add order breaks exact ties only, so the slots (a cache miss each) are read
                      // only then.
-                     if (found && !before(s, lead, [&] {
+                     if (found && !before(r, goal, s, otherRect, lead, leadRect, [&] {
                            return slots_[other].order < slots_[leadId.index].order;
                          })) {
                        return;

@@ -73,6 +73,29 @@ TEST(World, AHandleStaysStaleAfterItsSlotIsReused) {
   EXPECT_EQ(w.rect(b), (Rect{32, 32, 8, 8}));
 }
 
+// Free slots are reused last-in first-out, so one slot can cycle through all 2^32 generations
+// (add, remove, add, remove...). Were the generation to wrap, the first handle of that slot would
+// name a new item. The slot starts 2 removes short of the wrap instead of 2^32 cycles in.
+TEST(World, AHandleNeverBecomesValidAgainWhenItsSlotsGenerationsRunOut) {
+  World w(16);
+  const ItemId first = w.addAtGenerationForTesting({0, 0, 1, 1}, 0xFFFFFFFEu);
+  w.remove(first);
+  const ItemId last = w.add({0, 0, 1, 1});
+  EXPECT_EQ(last.index, first.index) << "below the wrap the slot is still reused";
+  EXPECT_EQ(last.generation, 0xFFFFFFFFu);
+  w.remove(last);  // its generations are used up: the slot is retired
+  const ItemId fresh = w.add({7, 7, 2, 2});
+  EXPECT_NE(fresh.index, first.index);
+  for (const ItemId stale : {first, last, ItemId{first.index, 0}, ItemId{first.index, 1}}) {
+    EXPECT_FALSE(w.has(stale)) << stale.index << "/" << stale.generation;
+    EXPECT_THROW((void)w.rect(stale), tv::Error);
+  }
+  EXPECT_EQ(w.rect(fresh), (Rect{7, 7, 2, 2}));
+  EXPECT_EQ(w.count(), 1u);
+  // A retired slot stays out of every later add.
+  for (int i = 0; i < 8; ++i) EXPECT_NE(w.add({0, 0, 1, 1}).index, first.index);
+}
+
 TEST(World, DefaultAndForeignHandlesAreNotInTheWorld) {
   World w;
   (void)w.add({0, 0, 1, 1});

@@ -110,13 +110,18 @@ void Grid::forEachSweptCell(const Rect& start, Vec2 goal, F&& f, const CellRange
   const std::int64_t c0 = std::max(index(uMin), alongX ? clip.x0 : clip.y0);
   const std::int64_t c1 = std::min(index(uMax), alongX ? clip.x1 : clip.y1);
   const std::int64_t rMin = alongX ? clip.y0 : clip.x0, rMax = alongX ? clip.y1 : clip.x1;
-  // Times come from one reciprocal and vs from the start and end edges; their rounding is far
-  // below a cell, and a margin of a few ulps of the largest magnitude involved (fixed for the
-  // whole walk) keeps it conservative without an absolute epsilon.
+  // Times come from one reciprocal and vs from the start and end edges. A column's bounds
+  // (c · size) and index() round at the scale of the walked coordinate u, not of v: where a cell
+  // is only a few ulps of u wide they are off by a good part of a cell, which shifts the column's
+  // time window by as much as ulps(u) / |du| and the v it allows by ulps(u) · |dv| / |du| <=
+  // ulps(u), the walk's axis being the one that moves more. So the margin is a few ulps of the
+  // largest magnitude of either axis (fixed for the whole walk): conservative without an
+  // absolute epsilon, and far below a cell at any ordinary scale.
   const double inv = du != 0.0 ? 1.0 / du : 0.0;
   const double dv0 = w0 - v0, dv1 = w1 - v1;
-  const double scale = std::max({std::fabs(v0), std::fabs(v1), std::fabs(w0), std::fabs(w1),
-                                 std::fabs(dv0), size_});
+  const double scale =
+      std::max({std::fabs(v0), std::fabs(v1), std::fabs(w0), std::fabs(w1), std::fabs(dv0),
+                std::fabs(u0), std::fabs(u1), std::fabs(e0), std::fabs(e1), size_});
   const double slack = scale * 0x1p-45;
   const double vFloor = std::min(v0, w0), vCeil = std::max(v1, w1);
   for (std::int64_t c = c0; c <= c1; ++c) {

@@ -5,7 +5,8 @@
 namespace tv {
 
 /// Stable handle to an item in a World. A removed item's handle never becomes valid again,
-/// even when its storage is reused (the generation changes).
+/// even when its storage is reused (the generation changes; a slot whose 2^32 generations are
+/// used up is retired, never reused).
 struct ItemId {
   static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
   std::uint32_t index = kNone;

@@ -7,8 +7,10 @@
 /// - a move never passes through anything its filter does not ignore or cross, at any speed;
 /// - contact is exact: after touch or slide the item's edge equals the obstacle's edge;
 /// - sliding along floors and walls made of separate tiles never catches on a seam;
-/// - collisions are ordered by ti, then ordinary hits before exact corner hits, then by the
-///   order in which items were added — never by address or hash order;
+/// - collisions are ordered by their exact time of impact (compared without rounding, so of
+///   two faces an ulp apart the nearer comes first even when their rounded ti are equal), then
+///   ordinary hits before exact corner hits, then by the order in which items were added —
+///   never by address or hash order;
 /// - the steady-state move path allocates nothing (buffers are kept and reused);
 /// - bad input throws tv::Error naming the value and leaves the world unchanged.
 /// Not thread-safe: queries reuse internal scratch buffers.
@@ -84,7 +86,12 @@ class World {
   // -- items ---------------------------------------------------------------------------------
   /// Adds a rect (finite, w > 0, h > 0, meeting at most 2^24 cells) and returns its handle.
   ItemId add(const Rect& r);
+  /// Removes the item; its handle is never valid again. A slot is reused by later adds with a
+  /// new generation, up to 2^32 − 1 times, then retired (a few bytes that are never reused).
   void remove(ItemId id);
+  /// Testing only: `add` into a new slot whose generation starts at `generation`, so that the
+  /// retirement of a slot near 2^32 removes can be tested without 2^32 iterations.
+  ItemId addAtGenerationForTesting(const Rect& r, std::uint32_t generation);
   /// Teleports (and may resize) an item; no collision is checked.
   void update(ItemId id, const Rect& r);
   void update(ItemId id, Vec2 position);
@@ -172,6 +179,7 @@ class World {
 
  private:
   static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
+  static constexpr std::uint32_t kLastGeneration = 0xFFFFFFFFu;
 
   static constexpr std::size_t kCachedCells = 4;
   static constexpr std::int64_t kDirectCells = 4;
@@ -191,6 +199,8 @@ class World {
   void validateGoal(const Rect& r, Vec2 goal, std::string_view where) const;
   void validateOptions(const MoveOptions& o, std::string_view where) const;
 
+  std::uint32_t newSlot();
+  ItemId fill(std::uint32_t index, const Rect& r);  // add into a free slot, validated
   void place(std::uint32_t index, const Rect& r);  // update without validation
   struct Bucket;
   const Bucket& findBucket(Cell c) const;  // its `cell` is kNoCell if absent
