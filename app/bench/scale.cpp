@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bump_crowd.hpp"
 #include "hot_paths.hpp"
 #include "report.hpp"
 #include "studies.hpp"
@@ -256,6 +257,149 @@ double simMsPerTick(const SlowScene& s, const std::string& mover, std::uint64_t 
   return msPerTick([&] { sim.tick(); }, ticks, repeats);
 }
 
+
+// [SECTION] bump-crowd ----------------------------------------------------------------------------
+
+struct BumpRow {
+  std::int64_t n;
+  double cell;
+  CrowdFilter filter;
+  double ms, instructions, bytes;  // instructions per move: < 0 when the counter is unavailable
+};
+
+BumpRow bumpRow(std::int64_t n, double cell, CrowdFilter filter, std::uint64_t seed,
+                std::uint64_t ticks, int repeats, bool batched) {
+  BumpCrowd crowd({bumpWorldSide(n), n, cell, seed});
+  const auto tick = [&] { batched ? crowd.tickBatched(filter) : crowd.tick(filter); };
+  for (int t = 0; t < 3; ++t) tick();  // warm: cells and buffers reach their steady sizes
+  BumpRow row{n, cell, filter, 0, -1, crowd.bytesPerItem()};
+  row.ms = msPerTick(tick, ticks, repeats);
+  const InstructionCounter counter;
+  if (counter.available()) {
+    const std::uint64_t before = counter.read();
+    for (std::uint64_t t = 0; t < ticks; ++t) tick();
+    row.instructions = static_cast<double>(counter.read() - before) /
+                       static_cast<double>(ticks * static_cast<std::uint64_t>(n));
+  }
+  return row;
+}
+
+std::vector<std::int64_t> wholeNumbers(const Options& o, std::string_view flag,
+                                       std::vector<double> fallback, double max) {
+  std::vector<std::int64_t> out;
+  for (const double c : o.numbers(flag, std::move(fallback))) {
+    if (!(c >= 1 && c <= max && c == std::floor(c))) {
+      throw UsageError{"--" + std::string(flag) + ": " + sig3(c) + " is not a whole number in [1, " +
+                       sig3(max) + "]"};
+    }
+    out.push_back(static_cast<std::int64_t>(c));
+  }
+  return out;
+}
+
+std::string verdict(double measured, double target) {
+  return measured <= target ? "met" : "MISSED by " + fixed(measured / target, 2) + "×";
+}
+
+void runBumpCrowd(const Options& o, int repeats, std::ostream& os) {
+  const std::vector<std::int64_t> counts =
+      wholeNumbers(o, "bump-counts", o.pick<std::vector<double>>({1000}, {1000, 10000},
+                                                                 {1000, 10000, 100000}),
+                   100000);
+  const std::vector<double> cells = o.numbers("cells", o.pick<std::vector<double>>(
+                                                           {32}, {16, 32, 64}, {16, 32, 64}));
+  for (const double c : cells) {
+    if (!(c >= 1 && c <= 4096)) throw UsageError{"--cells: " + sig3(c) + " is not in [1, 4096]"};
+  }
+  std::vector<CrowdFilter> filters;
+  for (const std::string& f : o.names("filters", {"tiles", "all"})) {
+    if (f != "tiles" && f != "all") throw UsageError{"--filters " + f + ": tiles or all"};
+    filters.push_back(f == "tiles" ? CrowdFilter::tiles : CrowdFilter::all);
+  }
+  const auto ticksFor = [&](std::int64_t n) -> std::uint64_t {
+    if (o.has("ticks")) return std::max<std::uint64_t>(1, parseCount("ticks", o.extra.at("ticks")));
+    const double budget = o.pick(2e4, 2e5, 2e6);  // moves per repeat
+    return static_cast<std::uint64_t>(std::clamp(budget / static_cast<double>(n), 3.0, 2000.0));
+  };
+
+  os << "### bump-crowd: bump.lua's benchmark scene\n\n"
+     << "A 2000×2000 px world of 16×16 tiles (125×125; 6320×6320 for 10^5 movers, the same "
+        "density): a solid border plus random horizontal platforms 3–12 tiles long until 30% of "
+        "the grid is solid, one item per tile. N 8×8 movers at random free spots, random "
+        "directions, speeds uniform in [30, 240] px/s; each tick (1/60 s) every mover makes one "
+        "`World::move` with `slide` and flips the velocity component of each normal it reports. "
+        "Filter `tiles`: movers ignore each other; `all`: they slide against each other too. "
+        "**instr/move** is the CPU's instruction counter (perf_event_open; n/a where the kernel "
+        "does not expose it — `valgrind --tool=callgrind` gives the same figure); bytes per item "
+        "is the world's heap over its items (tiles + movers), right after it was filled.\n\n";
+  Table table({"N:", "cell:", "filter", "ms/tick:", "ns/move:", "instr/move:", "bytes/item:"});
+  std::vector<BumpRow> rows;
+  Progress progress("scale bump-crowd", counts.size() * cells.size() * filters.size());
+  for (const std::int64_t n : counts) {
+    for (const double cell : cells) {
+      for (const CrowdFilter f : filters) {
+        const BumpRow r = bumpRow(n, cell, f, o.seed, ticksFor(n), repeats, false);
+        rows.push_back(r);
+        table.add({std::to_string(n), fixed(cell, 0), filterName(f), fixed(r.ms, 3),
+                   fixed(r.ms * 1e6 / static_cast<double>(n), 0),
+                   r.instructions < 0 ? "n/a" : fixed(r.instructions, 0), fixed(r.bytes, 0)});
+        progress.step(std::to_string(n) + " cell " + fixed(cell, 0) + " " + filterName(f));
+      }
+    }
+  }
+  table.printMarkdown(os);
+  table.writeCsv(o.out, "scale_bump_crowd.csv");
+  // Targets, at the best cell size for each N.
+  const auto best = [&](std::int64_t n, CrowdFilter f) -> const BumpRow* {
+    const BumpRow* b = nullptr;
+    for (const BumpRow& r : rows)
+      if (r.n == n && r.filter == f && (!b || r.ms < b->ms)) b = &r;
+    return b;
+  };
+  const std::pair<std::int64_t, double> targets[] = {{1000, 0.08}, {10000, 1.0}, {100000, 15.0}};
+  for (const auto& [n, target] : targets) {
+    const BumpRow* t = best(n, CrowdFilter::tiles);
+    if (!t) continue;
+    os << "Target: bump-crowd " << n << " `tiles` ≤ " << sig3(target) << " ms/tick: "
+       << fixed(t->ms, 3) << " ms at cell " << fixed(t->cell, 0) << " ("
+       << verdict(t->ms, target) << ")";
+    if (const BumpRow* a = best(n, CrowdFilter::all)) {
+      os << "; `all` " << fixed(a->ms, 3) << " ms, " << fixed(a->ms / t->ms, 2)
+         << "× `tiles` (target ≤ 1.3×: " << (a->ms / t->ms <= 1.3 ? "met" : "MISSED") << ")";
+    }
+    os << ".\n\n";
+  }
+  double bytes = 0;
+  for (const BumpRow& r : rows) bytes = std::max(bytes, r.bytes);
+  os << "Target: ≤ 128 bytes per item: at most " << fixed(bytes, 0) << " (" << verdict(bytes, 128)
+     << ").\n\n";
+
+  // Moving versus moving: the same crowd, `all`, through one tv::Batch per tick.
+  const std::vector<std::int64_t> batchCounts = wholeNumbers(
+      o, "batch-counts", o.pick<std::vector<double>>({100}, {100, 1000}, {100, 1000}), 100000);
+  os << "### bump-crowd through tv::Batch (moving versus moving)\n\n"
+     << "The same scene with filter `all`, every mover in one `Batch::step` per tick: movers meet "
+        "by relative motion during the tick (earliest time of impact first), which one move at a "
+        "time cannot do. Cell 32.\n\n";
+  Table batch({"N:", "ms/tick:", "ns/move:", "instr/move:"});
+  std::vector<BumpRow> batchRows;
+  for (const std::int64_t n : batchCounts) {
+    const std::uint64_t ticks = o.has("ticks") ? ticksFor(n) : std::max<std::uint64_t>(3, ticksFor(n) / 10);
+    const BumpRow r = bumpRow(n, 32, CrowdFilter::all, o.seed, ticks, repeats, true);
+    batchRows.push_back(r);
+    batch.add({std::to_string(n), fixed(r.ms, 3), fixed(r.ms * 1e6 / static_cast<double>(n), 0),
+               r.instructions < 0 ? "n/a" : fixed(r.instructions, 0)});
+  }
+  batch.printMarkdown(os);
+  batch.writeCsv(o.out, "scale_batch.csv");
+  for (const BumpRow& r : batchRows) {
+    const double target = r.n <= 1000 ? 1.0 : 10.0;
+    if (r.n != 1000 && r.n != 10000) continue;
+    os << "Target: tv::Batch of " << r.n << " colliding movers ≤ " << sig3(target)
+       << " ms/tick: " << fixed(r.ms, 3) << " ms (" << verdict(r.ms, target) << ").\n\n";
+  }
+}
+
 }  // namespace
 
 // [SECTION] the study -----------------------------------------------------------------------------
@@ -280,6 +424,7 @@ int runScale(const Options& o) {
     }
   }
   const bool crowdOnly = o.has("crowd-only");
+  const bool bumpOnly = o.has("bump-only");
   const int repeats = o.pick(1, 3, 5);
   const auto ticksFor = [&](std::int64_t n) -> std::uint64_t {
     if (o.has("ticks")) return std::max<std::uint64_t>(1, parseCount("ticks", o.extra.at("ticks")));
@@ -292,6 +437,9 @@ int runScale(const Options& o) {
                o.out);
   os << "Single thread. Tracing compiled " << (kTraceCompiledIn ? "in (and off)" : "out")
      << ". Times are the best of " << repeats << " repeat(s).\n\n";
+
+  if (!crowdOnly) runBumpCrowd(o, repeats, os);
+  if (bumpOnly) return 0;
 
   // -- crowd
   os << "### crowd: 8×8 movers among 16×16 tiles (~30% solid, world grown with N), 120 px/s\n\n"

@@ -19,11 +19,16 @@ std::span<const Study> studies() {
        runJitter},
       {"stress", "numerical stability: a table of cases; exits 1 if any fails", {}, runStress},
       {"scale",
-       "crowd ms per tick against N, move cost against length, adaptive vs discrete",
+       "bump-crowd and crowd ms per tick against N, tv::Batch, move cost against length, adaptive vs discrete",
        {{"counts", "comma-separated crowd sizes (default 100,1000,10000,100000)"},
         {"movers", "comma-separated movers for the crowd (default sweep,continuous,adaptive)"},
         {"ticks", "ticks timed per crowd run (default by size)"},
-        {"crowd-only", "only the crowd table (used to compare tracing builds)", false}},
+        {"crowd-only", "only the crowd table (used to compare tracing builds)", false},
+        {"bump-counts", "comma-separated bump-crowd sizes (default 1000,10000,100000)"},
+        {"cells", "comma-separated bump-crowd cell sizes (default 16,32,64)"},
+        {"filters", "bump-crowd filters: tiles, all (default both)"},
+        {"batch-counts", "comma-separated sizes of the bump-crowd through tv::Batch"},
+        {"bump-only", "only the bump-crowd tables", false}},
        runScale},
   };
   return all;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "hit_order.hpp"
+#include "spatial_hash.hpp"
 #include "tv/error.hpp"
 
 namespace tv {
@@ -17,12 +18,6 @@ std::uint64_t mix(std::uint64_t z) {
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
   return z ^ (z >> 31);
-}
-
-std::uint64_t hashCell(Cell c) {
-  std::uint64_t h = static_cast<std::uint64_t>(c.x) * 0x9E3779B97F4A7C15ull +
-                    static_cast<std::uint64_t>(c.y) * 0xC2B2AE3D27D4EB4Full;
-  return h ^ (h >> 29);
 }
 
 std::string describe(const Rect& r) {
@@ -61,14 +56,33 @@ decltype(auto) observed(WorldObserver& o, Call&& call, Report&& report) {
 
 }  // namespace
 
-World::World(double cellSize) : grid_(1.0) {
+namespace {
+double checkedCellSize(double cellSize) {
   requirePositive("tv::World", "cellSize", cellSize);
-  grid_ = Grid(cellSize);
+  return cellSize;
+}
+}  // namespace
+
+World::World(double cellSize) : grid_(checkedCellSize(cellSize)), hash_(cellSize) {
   responses_ = {{"touch", &touchResponse},
                 {"cross", &crossResponse},
                 {"slide", &slideResponse},
                 {"bounce", &bounceResponse}};
-  table_.assign(64, Bucket{});
+}
+
+World::Hash::Hash(double cellSize) : p_(new detail::SpatialHash(cellSize)) {}
+World::Hash::Hash(const Hash& other) : p_(new detail::SpatialHash(*other.p_)) {}
+World::Hash::Hash(Hash&& other) noexcept : p_(std::exchange(other.p_, nullptr)) {}
+World::Hash& World::Hash::operator=(const Hash& other) {
+  if (this != &other) *p_ = *other.p_;
+  return *this;
+}
+World::Hash& World::Hash::operator=(Hash&& other) noexcept {
+  std::swap(p_, other.p_);
+  return *this;
+}
+World::Hash::~Hash() {
+  delete p_;
 }
 
 // [SECTION] validation --------------------------------------------------------------------------
@@ -141,7 +155,7 @@ ItemId World::addAtGenerationForTesting(const Rect& r, std::uint32_t generation)
 }
 
 std::uint32_t World::newSlot() {
-  if (slots_.size() >= Entry::kShared) fail(kAdd, "the world holds 2^31 items already");
+  if (slots_.size() >= detail::HashEntry::kShared) fail(kAdd, "the world holds 2^31 items already");
   const auto index = static_cast<std::uint32_t>(slots_.size());
   slots_.emplace_back();
   stamp_.push_back(0);
@@ -151,10 +165,9 @@ std::uint32_t World::newSlot() {
 ItemId World::fill(std::uint32_t index, const Rect& r) {
   Slot& s = slots_[index];
   s.rect = r;
-  s.cells = grid_.cellsOf(r);
   s.order = nextOrder_++;
   s.alive = true;
-  insertCells(index, r, s.cells);
+  hash_->insert(index, s.generation, r);
   addExtent(r);
   ++count_;
   return {index, s.generation};
@@ -166,7 +179,7 @@ void World::remove(ItemId id) {
   }
   slot(id, "tv::World::remove");
   Slot& s = slots_[id.index];
-  eraseCells(id.index);
+  hash_->erase(id.index);
   dropExtent(s.rect);
   s.alive = false;
   // A generation that wrapped would make the oldest handles of this slot valid again: a slot
@@ -189,21 +202,7 @@ void World::update(ItemId id, const Rect& r) {
 
 void World::place(std::uint32_t index, const Rect& r) {
   Slot& s = slots_[index];
-  const CellRange cells = grid_.cellsOf(r);
-  if (cells != s.cells) {
-    eraseCells(index);
-    insertCells(index, r, cells);
-    s.cells = cells;
-  } else {
-    forEachCellOf(index, [&](std::uint32_t k) {
-      for (Entry& e : cells_[k]) {
-        if (e.slot() == index) {
-          e.rect = r;
-          break;
-        }
-      }
-    });
-  }
+  hash_->update(index, r);
   if (r.w != s.rect.w || r.h != s.rect.h) {
     dropExtent(s.rect);
     addExtent(r);
@@ -244,146 +243,30 @@ void World::dropExtent(const Rect& r) {
 
 // [SECTION] spatial hash ------------------------------------------------------------------------
 
-const World::Bucket& World::findBucket(Cell c) const {
-  const std::size_t mask = table_.size() - 1;
-  for (std::size_t i = hashCell(c) & mask;; i = (i + 1) & mask) {
-    const Bucket& b = table_[i];
-    if (b.cell == kNoCell || b.key == c) return b;
-  }
+std::size_t World::countCells() const {
+  return hash_->occupiedCells();
 }
 
-std::uint32_t World::findCell(Cell c) const {
-  return findBucket(c).cell;
-}
-
-std::uint32_t World::cellFor(Cell c) {
-  const std::uint32_t found = findCell(c);
-  if (found != kNoCell) return found;
-  if ((cellKeys_.size() + 1) * 2 > table_.size()) growHash();
-  const auto k = static_cast<std::uint32_t>(cellKeys_.size());
-  cellKeys_.push_back(c);
-  cells_.emplace_back();
-  const std::size_t mask = table_.size() - 1;
-  std::size_t i = hashCell(c) & mask;
-  while (table_[i].cell != kNoCell) i = (i + 1) & mask;
-  table_[i] = {c, nullptr, 0, k};
-  cellBucket_.push_back(static_cast<std::uint32_t>(i));
-  return k;
-}
-
-void World::growHash() {
-  std::vector<Bucket> table(table_.size() * 2);
-  const std::size_t mask = table.size() - 1;
-  for (std::uint32_t k = 0; k < cellKeys_.size(); ++k) {
-    std::size_t i = hashCell(cellKeys_[k]) & mask;
-    while (table[i].cell != kNoCell) i = (i + 1) & mask;
-    table[i] = {cellKeys_[k], cells_[k].data(), static_cast<std::uint32_t>(cells_[k].size()), k};
-    cellBucket_[k] = static_cast<std::uint32_t>(i);
-  }
-  table_ = std::move(table);
-}
-
-void World::syncBucket(std::uint32_t k) {
-  Bucket& b = table_[cellBucket_[k]];
-  b.data = cells_[k].data();
-  b.size = static_cast<std::uint32_t>(cells_[k].size());
-}
-
-void World::insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r) {
-  used_ = used_.empty() ? r
-                        : CellRange{std::min(used_.x0, r.x0), std::min(used_.y0, r.y0),
-                                    std::max(used_.x1, r.x1), std::max(used_.y1, r.y1)};
-  const std::uint32_t tag = slot | (r.count() > 1 ? Entry::kShared : 0u);
-  const std::uint32_t generation = slots_[slot].generation;
-  std::size_t n = 0;
-  Grid::forEachCell(r, [&](Cell c) {
-    const std::uint32_t k = cellFor(c);
-    if (n < kCachedCells) slots_[slot].cellIds[n] = k;
-    ++n;
-    auto& items = cells_[k];
-    if (items.empty()) ++occupiedCells_;
-    if (items.size() == items.capacity()) {
-      regrowCell(items, std::max<std::size_t>(4, 2 * items.size()));
-    }
-    items.push_back({rect, tag, generation});
-    syncBucket(k);
-  });
-}
-
-template <class F>
-void World::forEachCellOf(std::uint32_t slot, F&& f) {
-  // Items of up to kCachedCells cells (all small ones) remember their cells: no hashing.
-  const Slot& s = slots_[slot];
-  if (s.cells.count() <= static_cast<std::int64_t>(kCachedCells)) {
-    for (std::int64_t i = 0; i < s.cells.count(); ++i) f(s.cellIds[static_cast<std::size_t>(i)]);
-    return;
-  }
-  Grid::forEachCell(s.cells, [&](Cell c) { f(findCell(c)); });
-}
-
-// A cell's entries live in a buffer of a power-of-two capacity. Buffers are traded through
-// spare pools instead of being freed: a cell that grows takes a larger spare and gives back its
-// old one, a cell that empties to half gives its buffer back for a smaller one. So the
-// heap is only touched when more cells are crowded *at once* than ever before, not each time
-// some cell sees its own peak — which in a moving crowd goes on for tens of thousands of ticks.
-// A cell leaves a buffer as soon as its entries fit the next size down, so the buffers of a size
-// in use are the cells crowded to that size right now.
-void World::regrowCell(std::vector<Entry>& items, std::size_t capacity) {
-  const auto pool = static_cast<std::size_t>(std::countr_zero(capacity));
-  reservePools(pool);
-  if (spares_[pool].empty()) {
-    // Out of spares: make half as many again as this size has in circulation, as a vector grows
-    // geometrically, so a new peak must be half as high again before the heap is touched again.
-    const std::size_t extra = std::max<std::size_t>(1, buffers_[pool] / 2);
-    for (std::size_t i = 0; i < extra; ++i) spares_[pool].emplace_back().reserve(capacity);
-    buffers_[pool] += extra;
-  }
-  std::vector<Entry> next = std::move(spares_[pool].back());
-  spares_[pool].pop_back();
-  next.assign(items.begin(), items.end());
-  if (items.capacity() > 0) {
-    const auto old = static_cast<std::size_t>(std::countr_zero(items.capacity()));
-    reservePools(old);
-    items.clear();
-    spares_[old].push_back(std::move(items));
-  }
-  items = std::move(next);
-}
-
-void World::reservePools(std::size_t pool) {
-  // Room for many spares up front, so that trading buffers does not itself allocate.
-  while (spares_.size() <= pool) {
-    spares_.emplace_back().reserve(256);
-    buffers_.push_back(0);
-  }
-}
-
-void World::eraseCells(std::uint32_t slot) {
-  forEachCellOf(slot, [&](std::uint32_t k) {
-    assert(k != kNoCell);
-    auto& items = cells_[k];
-    const auto it =
-        std::find_if(items.begin(), items.end(), [&](const Entry& e) { return e.slot() == slot; });
-    assert(it != items.end());
-    *it = items.back();
-    items.pop_back();
-    if (items.empty()) --occupiedCells_;
-    const std::size_t smaller = items.capacity() / 2;
-    if (smaller >= 4 && items.size() <= smaller) {
-      const auto pool = static_cast<std::size_t>(std::countr_zero(smaller));
-      if (pool < spares_.size() && !spares_[pool].empty()) regrowCell(items, smaller);
-    }
-    syncBucket(k);
-  });
+void World::visitOccupiedCells(void (*fn)(void*, Cell, std::size_t), void* ctx) const {
+  hash_->forEachOccupiedCell([&](Cell c, std::size_t n) { fn(ctx, c, n); });
 }
 
 std::vector<std::uint32_t> World::cellItems(Cell c) const {
   std::vector<std::uint32_t> out;
-  const std::uint32_t k = findCell(c);
-  if (k != kNoCell) {
-    for (const Entry& e : cells_[k]) out.push_back(e.slot());
-  }
+  for (const detail::HashEntry& e : hash_->items(c)) out.push_back(e.slot());
   return out;
+}
+
+std::size_t World::memoryBytes() const {
+  std::size_t bytes = hash_->memoryBytes() + slots_.capacity() * sizeof(Slot) +
+                      freeSlots_.capacity() * sizeof(std::uint32_t) +
+                      stamp_.capacity() * sizeof(std::uint32_t) +
+                      collisions_.capacity() * sizeof(Collision) +
+                      (excluded_.capacity() + queryScratch_.capacity()) * sizeof(std::uint32_t) +
+                      responses_.capacity() * sizeof(NamedResponse);
+  // A std::map node: the value and three pointers and a colour, rounded up by the allocator.
+  bytes += extents_.size() * (sizeof(std::pair<const double, std::size_t>) + 4 * sizeof(void*));
+  return bytes;
 }
 
 std::uint32_t World::nextEpoch() const {
@@ -401,10 +284,11 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
                              BroadPhase broad, MoveTrace* trace, F&& f) const {
   const std::uint32_t epoch = nextEpoch();
   if (self != ItemId::kNone) stamp_[self] = epoch;
+  const detail::SpatialHash& hash = *hash_;
+  const CellRange& used = hash.liveBox();
   const auto visit = [&](Cell c) {
     if (trace) trace->cells.push_back(c);
-    const Bucket& b = findBucket(c);
-    for (const Entry& e : std::span<const Entry>(b.data, b.size)) {
+    for (const detail::HashEntry& e : hash.items(c)) {
       const std::uint32_t slot = e.slot();
       if (e.shared() || slot == self) {
         if (stamp_[slot] == epoch) continue;
@@ -415,14 +299,15 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
   };
   // Nothing lies outside the cells that ever held an item: both walks are clipped to them.
   const CellRange all = grid_.cellsOf(hull);
-  const CellRange box{std::max(all.x0, used_.x0), std::max(all.y0, used_.y0),
-                      std::min(all.x1, used_.x1), std::min(all.y1, used_.y1)};
+  const CellRange box{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
+                      std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
   // The swept walk pays only where it skips cells of the bounding box: not along an axis (the
   // hull is the box), nor when the box spans a few cells (it would skip one or two, for more
   // arithmetic than those cost to scan).
+  constexpr std::int64_t kDirectCells = 4;
   const bool alongAnAxis = goal.x == r.x || goal.y == r.y;
   if (broad == BroadPhase::swept && box.count() > kDirectCells && !alongAnAxis) {
-    grid_.forEachSweptCell(r, goal, visit, used_);
+    grid_.forEachSweptCell(r, goal, visit, used);
   } else {
     Grid::forEachCell(box, visit);
   }
@@ -732,11 +617,8 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
                     "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
   }
   queryScratch_.clear();
-  const std::uint32_t cell = findCell(grid_.cellAt(p));
-  if (cell != kNoCell) {
-    for (const Entry& e : cells_[cell]) {
-      if (contains(e.rect, p)) queryScratch_.push_back(e.slot());
-    }
+  for (const detail::HashEntry& e : hash_->items(grid_.cellAt(p))) {
+    if (contains(e.rect, p)) queryScratch_.push_back(e.slot());
   }
   std::sort(queryScratch_.begin(), queryScratch_.end(),
             [&](std::uint32_t a, std::uint32_t b) { return slots_[a].order < slots_[b].order; });
@@ -837,7 +719,7 @@ void World::restore(const WorldState& s) {
                       responses_[i].name + "' in this world");
     }
   }
-  if (s.slots.size() >= Entry::kShared) fail(where, "more than 2^31 slots");
+  if (s.slots.size() >= detail::HashEntry::kShared) fail(where, "more than 2^31 slots");
   // Every check before any change: a state may come from an untrusted file.
   std::vector<std::uint64_t> orders;
   for (std::size_t i = 0; i < s.slots.size(); ++i) {
@@ -878,8 +760,7 @@ void World::restore(const WorldState& s) {
     out.rect = in.rect;
     out.order = in.order;
     out.alive = true;
-    out.cells = fresh.grid_.cellsOf(in.rect);
-    fresh.insertCells(i, in.rect, out.cells);
+    fresh.hash_->insert(i, in.generation, in.rect);
     fresh.addExtent(in.rect);
     ++fresh.count_;
   }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -170,24 +171,58 @@ TEST(WorldGrid, ToCellAndToWorldAreFloorAndOrigin) {
   EXPECT_EQ(w.toWorld(w.toCell({37, -5})), (Vec2{32, -16}));
 }
 
-//   cell size 16, items registered in every cell their closed rect meets:
-//   a {2,2,8,8}   -> cell (0,0)
-//   b {8,8,16,16} -> cells (0..1, 0..1)
-//   c {32,0,16,16} -> right edge 48 lies on a cell line: cells (2..3, 0..1)
-TEST(WorldGrid, AnItemIsInEveryCellItsClosedRectMeets) {
+//   cell size 16, items registered in every cell their half-open rect [x, right) × [y, bottom)
+//   meets:
+//   a {2,2,8,8}    -> cell (0,0)
+//   b {8,8,16,16}  -> cells (0..1, 0..1)
+//   c {32,0,16,16} -> exactly cell (2,0): its right edge 48 and bottom edge 16 lie on cell
+//                     lines, and an edge on a line does not reach into the next cell
+//
+//        x: 0    16   32   48   64
+//   y:  0   +----+----+----+----+
+//           |a b | b  |cccc|    |
+//       16  +----+----+----+----+
+//           | b  | b  |    |    |
+//       32  +----+----+----+----+
+TEST(WorldGrid, AnItemIsInEveryCellItsHalfOpenRectMeets) {
   World w(16);
   const ItemId a = w.add({2, 2, 8, 8});
   EXPECT_EQ(w.countCells(), 1u);
   const ItemId b = w.add({8, 8, 16, 16});
   EXPECT_EQ(w.countCells(), 4u);
   const ItemId c = w.add({32, 0, 16, 16});
-  EXPECT_EQ(w.countCells(), 8u);
+  EXPECT_EQ(w.countCells(), 5u);
   EXPECT_EQ(itemsIn(w, {0, 0}), (std::vector<std::uint32_t>{a.index, b.index}));
   EXPECT_EQ(itemsIn(w, {1, 1}), std::vector<std::uint32_t>{b.index});
-  EXPECT_EQ(itemsIn(w, {3, 1}), std::vector<std::uint32_t>{c.index});
+  EXPECT_EQ(itemsIn(w, {2, 0}), std::vector<std::uint32_t>{c.index});
+  EXPECT_TRUE(w.cellItems({3, 0}).empty());  // c's right edge lies on x = 48
+  EXPECT_TRUE(w.cellItems({2, 1}).empty());  // c's bottom edge lies on y = 16
   EXPECT_TRUE(w.cellItems({2, 2}).empty());
   EXPECT_TRUE(w.cellItems({-100, 7}).empty());  // never used
   EXPECT_EQ(w.idAt(b.index), b);
+}
+
+TEST(WorldGrid, ATileOnCellLinesIsInOneCellYetEveryQueryAndMoveStillFindsIt) {
+  // A 16 px tile exactly on the 16 px cell (1,1); a mover pushed into it from each side, and
+  // queries that only touch its edges from the neighbouring cells.
+  World w(16);
+  const ItemId tile = w.add({16, 16, 16, 16});
+  EXPECT_EQ(w.countCells(), 1u);
+  EXPECT_EQ(itemsIn(w, {1, 1}), std::vector<std::uint32_t>{tile.index});
+  const ItemId m = w.add({40, 20, 8, 8});  // right of the tile, in cells (2..2, 1..1)
+  const tv::MoveResult left = w.check(m, {0, 20});
+  ASSERT_EQ(left.collisions.size(), 1u);
+  EXPECT_EQ(left.collisions[0].other, tile);
+  EXPECT_EQ(left.position.x, 32.0);  // flush with the tile's right edge
+  w.update(m, Rect{20, 40, 8, 8});   // below it
+  const tv::MoveResult up = w.check(m, {20, 0});
+  ASSERT_EQ(up.collisions.size(), 1u);
+  EXPECT_EQ(up.position.y, 32.0);
+  // Touching the right edge from cell (2,1) is not an overlap; reaching 1 ulp inside is.
+  EXPECT_TRUE(w.queryRect({32, 16, 8, 8}).empty());
+  EXPECT_EQ(w.queryRect({std::nextafter(32.0, 0.0), 16, 8, 8}), std::vector<ItemId>{tile});
+  EXPECT_EQ(w.queryPoint({std::nextafter(32.0, 0.0), 31.5}), std::vector<ItemId>{tile});
+  EXPECT_TRUE(w.queryPoint({32, 20}).empty());
 }
 
 TEST(WorldGrid, UpdateMovesTheItemBetweenCells) {

@@ -3,8 +3,10 @@
 /// overlay and the tests. Cell (cx, cy) covers [cx·size, (cx+1)·size) × [cy·size, (cy+1)·size).
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "tv/geometry.hpp"
 
@@ -65,6 +67,15 @@ class Grid {
   [[nodiscard]] CellRange cellsOf(const Rect& r) const {
     return {index(r.x), index(r.y), index(r.right()), index(r.bottom())};
   }
+  /// Cells an item is registered in: those its half-open extent [x, right) × [y, bottom)
+  /// meets, so an edge on a cell line does not reach into the next cell. Two rects whose
+  /// interiors overlap share one of these cells; a rect narrower than the rounding of its
+  /// coordinates still has the cell of its top-left corner.
+  [[nodiscard]] CellRange cellsHolding(const Rect& r) const {
+    const std::int64_t x0 = index(r.x), y0 = index(r.y);
+    return {x0, y0, std::max(x0, index(justBelow(r.right()))),
+            std::max(y0, index(justBelow(r.bottom())))};
+  }
   /// True when the rect's cell indices fit the hash (|coordinate / cellSize| < 2^52).
   [[nodiscard]] bool fits(const Rect& r) const {
     const double lo = std::min(r.x, r.y) * inverse_;
@@ -90,6 +101,13 @@ class Grid {
   }
 
  private:
+  // The largest double below v (v finite): the last coordinate a half-open extent holds.
+  static double justBelow(double v) {
+    if (v == 0.0) return -std::numeric_limits<double>::denorm_min();
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    return std::bit_cast<double>(v > 0.0 ? bits - 1 : bits + 1);
+  }
+
   double size_;
   double inverse_;
 };

@@ -21,6 +21,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "tv/geometry.hpp"
@@ -32,6 +33,10 @@
 #include "tv/trace.hpp"
 
 namespace tv {
+
+namespace detail {
+class SpatialHash;
+}
 
 /// Which cells a move's broad phase visits.
 enum class BroadPhase : std::uint8_t {
@@ -98,8 +103,12 @@ class World {
   [[nodiscard]] bool has(ItemId id) const;
   [[nodiscard]] Rect rect(ItemId id) const;
   [[nodiscard]] std::size_t count() const { return count_; }
-  /// Cells holding at least one item.
-  [[nodiscard]] std::size_t countCells() const { return occupiedCells_; }
+  /// Cells holding at least one item. An item is registered in every cell its half-open
+  /// extent [x, right) × [y, bottom) meets: a tile whose right edge lies on a cell line is not
+  /// in the cell beyond it. Cells are freed as they empty.
+  [[nodiscard]] std::size_t countCells() const;
+  /// Bytes the world holds on the heap (capacities of its items, cells and scratch buffers).
+  [[nodiscard]] std::size_t memoryBytes() const;
   /// Add order of an item: the stable tie-break among collisions at the same ti.
   [[nodiscard]] std::uint64_t order(ItemId id) const;
   /// Smallest width or height among the items (0 when empty); substep movers default to half.
@@ -115,8 +124,9 @@ class World {
   /// Calls f(Cell, std::size_t itemCount) for every occupied cell, in a stable order.
   template <class F>
   void forEachOccupiedCell(F&& f) const {
-    for (std::size_t i = 0; i < cellKeys_.size(); ++i)
-      if (!cells_[i].empty()) f(cellKeys_[i], cells_[i].size());
+    visitOccupiedCells(
+        [](void* ctx, Cell c, std::size_t n) { (*static_cast<std::remove_reference_t<F>*>(ctx))(c, n); },
+        const_cast<void*>(static_cast<const void*>(&f)));
   }
   /// Calls f(ItemId, const Rect&) for every item, in slot order.
   template <class F>
@@ -178,20 +188,32 @@ class World {
   [[nodiscard]] WorldObserver* observer() const { return observer_.get(); }
 
  private:
-  static constexpr std::uint32_t kNoCell = 0xFFFFFFFFu;
   static constexpr std::uint32_t kLastGeneration = 0xFFFFFFFFu;
 
-  static constexpr std::size_t kCachedCells = 4;
-  static constexpr std::int64_t kDirectCells = 4;
   static constexpr double kMaxItemCells = 16777216.0;  // 2^24 cells per item
 
   struct Slot {
     Rect rect;
-    CellRange cells;
-    std::uint32_t cellIds[kCachedCells] = {};  // the cells' indices, when there are at most 4
     std::uint64_t order = 0;
     std::uint32_t generation = 0;
     bool alive = false;
+  };
+
+  // The spatial hash (core/src/spatial_hash.hpp) by pointer, so that its storage stays out of
+  // this header; copies are deep.
+  class Hash {
+   public:
+    explicit Hash(double cellSize);
+    Hash(const Hash& other);
+    Hash(Hash&& other) noexcept;
+    Hash& operator=(const Hash& other);
+    Hash& operator=(Hash&& other) noexcept;
+    ~Hash();
+    detail::SpatialHash* operator->() const { return p_; }
+    detail::SpatialHash& operator*() const { return *p_; }
+
+   private:
+    detail::SpatialHash* p_;
   };
 
   const Slot& slot(ItemId id, std::string_view where) const;
@@ -202,19 +224,7 @@ class World {
   std::uint32_t newSlot();
   ItemId fill(std::uint32_t index, const Rect& r);  // add into a free slot, validated
   void place(std::uint32_t index, const Rect& r);  // update without validation
-  struct Bucket;
-  const Bucket& findBucket(Cell c) const;  // its `cell` is kNoCell if absent
-  std::uint32_t findCell(Cell c) const;    // kNoCell if absent
-  std::uint32_t cellFor(Cell c);           // creates it
-  void insertCells(std::uint32_t slot, const Rect& rect, const CellRange& r);
-  void eraseCells(std::uint32_t slot);
-  void syncBucket(std::uint32_t cell);
-  template <class F>
-  void forEachCellOf(std::uint32_t slot, F&& f);
-  struct Entry;
-  void regrowCell(std::vector<Entry>& items, std::size_t capacity);
-  void reservePools(std::size_t pool);
-  void growHash();
+  void visitOccupiedCells(void (*fn)(void*, Cell, std::size_t), void* ctx) const;
   void addExtent(const Rect& r);
   void dropExtent(const Rect& r);
 
@@ -222,48 +232,20 @@ class World {
                  const MoveOptions& o) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
                 MoveTrace* trace, Collision& best) const;
-  /// Calls f(slot, const Rect&) once for each item registered in the cells the move visits.
+  /// Calls f(slot, generation, const Rect&) once for each item registered in the cells the
+  /// move visits.
   template <class F>
   void forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
                         BroadPhase broad, MoveTrace* trace, F&& f) const;
   std::uint32_t nextEpoch() const;
 
   Grid grid_;
+  Hash hash_;
   std::vector<Slot> slots_;
   std::vector<std::uint32_t> freeSlots_;
   std::size_t count_ = 0;
   std::uint64_t nextOrder_ = 0;
   std::map<double, std::size_t> extents_;  // min(w, h) -> how many items
-
-  // Spatial hash: open addressing from cell to an index into cellKeys_/cells_. Cells are never
-  // freed, so a scene that keeps moving over the same ground stops allocating. Each cell keeps
-  // a copy of its items' rects, so the broad phase rejects candidates without touching slots_
-  // (the cache misses that dominate a crowd), and `kShared` marks items in more than one cell:
-  // only those need the visit stamp that keeps a candidate from being tested twice.
-  struct Entry {
-    static constexpr std::uint32_t kShared = 0x80000000u;
-    Rect rect;
-    std::uint32_t tag;         // slot, | kShared when the item is in more than one cell
-    std::uint32_t generation;  // the item's: a candidate becomes a handle without slots_
-    [[nodiscard]] std::uint32_t slot() const { return tag & ~kShared; }
-    [[nodiscard]] bool shared() const { return (tag & kShared) != 0; }
-  };
-  // A bucket mirrors its cell's entries (pointer and count), so the broad phase reads a cell
-  // with two dependent loads instead of three; every change to a cell's entries re-syncs it.
-  struct Bucket {
-    Cell key;
-    const Entry* data = nullptr;
-    std::uint32_t size = 0;
-    std::uint32_t cell = kNoCell;
-  };
-  std::vector<Bucket> table_;
-  std::vector<Cell> cellKeys_;
-  std::vector<std::uint32_t> cellBucket_;  // per cell, its bucket in table_
-  std::vector<std::vector<Entry>> cells_;
-  std::vector<std::vector<std::vector<Entry>>> spares_;  // [log2 capacity]: buffers to trade
-  std::vector<std::size_t> buffers_;  // [log2 capacity]: buffers made, in cells or spare
-  std::size_t occupiedCells_ = 0;
-  CellRange used_;  // every cell that ever held an item lies inside; empty at first
 
   struct NamedResponse {
     std::string name;

@@ -1,0 +1,287 @@
+#include "spatial_hash.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cassert>
+
+namespace tv::detail {
+
+SpatialHash::SpatialHash(double cellSize) : grid_(cellSize), table_(64) {}
+
+SpatialHash::SpatialHash(const SpatialHash& other)
+    : grid_(other.grid_),
+      table_(other.table_),
+      keys_(other.keys_),
+      bucketOf_(other.bucketOf_),
+      cells_(other.cells_),
+      freeCells_(other.freeCells_),
+      regs_(other.regs_),
+      spares_(other.spares_),
+      buffers_(other.buffers_),
+      occupied_(other.occupied_),
+      box_(other.box_),
+      freedSinceBox_(other.freedSinceBox_) {
+  // Vectors copy their sizes, not their capacities, and the buffer pools trade by capacity.
+  for (std::size_t k = 0; k < cells_.size(); ++k) cells_[k].reserve(other.cells_[k].capacity());
+  for (std::size_t p = 0; p < spares_.size(); ++p) {
+    spares_[p].reserve(other.spares_[p].capacity());
+    for (std::size_t i = 0; i < spares_[p].size(); ++i)
+      spares_[p][i].reserve(other.spares_[p][i].capacity());
+  }
+  for (std::uint32_t k = 0; k < keys_.size(); ++k)
+    if (!cells_[k].empty()) sync(k);
+}
+
+SpatialHash& SpatialHash::operator=(const SpatialHash& other) {
+  if (this != &other) {
+    SpatialHash copy(other);
+    *this = std::move(copy);
+  }
+  return *this;
+}
+
+// [SECTION] registration ------------------------------------------------------------------------
+
+void SpatialHash::insert(std::uint32_t slot, std::uint32_t generation, const Rect& r) {
+  if (regs_.size() <= slot) regs_.resize(std::size_t{slot} + 1);
+  regs_[slot].generation = generation;
+  add(slot, r, grid_.cellsHolding(r));
+}
+
+void SpatialHash::erase(std::uint32_t slot) {
+  drop(slot);
+  regs_[slot].cells = CellRange{};
+}
+
+void SpatialHash::update(std::uint32_t slot, const Rect& r) {
+  Registration& g = regs_[slot];
+  const CellRange cells = grid_.cellsHolding(r);
+  if (cells != g.cells) {
+    drop(slot);
+    add(slot, r, cells);
+    return;
+  }
+  if (g.cached()) {
+    const auto n = static_cast<std::size_t>(cells.count());
+    for (std::size_t i = 0; i < n; ++i) cells_[g.cell[i]][g.at[i]].rect = r;
+    return;
+  }
+  Grid::forEachCell(cells, [&](Cell c) {
+    for (HashEntry& e : cells_[find(c).cell]) {
+      if (e.slot() == slot) {
+        e.rect = r;
+        break;
+      }
+    }
+  });
+}
+
+void SpatialHash::add(std::uint32_t slot, const Rect& r, const CellRange& cells) {
+  Registration& g = regs_[slot];
+  g.cells = cells;
+  const std::uint32_t tag = slot | (cells.count() > 1 ? HashEntry::kShared : 0u);
+  std::size_t n = 0;
+  Grid::forEachCell(cells, [&](Cell c) {
+    const std::uint32_t k = cellFor(c);
+    auto& items = cells_[k];
+    if (items.size() == items.capacity()) {
+      regrow(items, std::max<std::size_t>(4, 2 * items.size()));
+    }
+    if (n < kCachedCells) {
+      g.cell[n] = k;
+      g.at[n] = static_cast<std::uint32_t>(items.size());
+    }
+    ++n;
+    items.push_back({r, tag, g.generation});
+    sync(k);
+  });
+}
+
+void SpatialHash::drop(std::uint32_t slot) {
+  const Registration& g = regs_[slot];
+  if (g.cached()) {
+    const auto n = static_cast<std::size_t>(g.cells.count());
+    for (std::size_t i = 0; i < n; ++i) dropAt(g.cell[i], g.at[i]);
+    return;
+  }
+  Grid::forEachCell(g.cells, [&](Cell c) {
+    const std::uint32_t k = find(c).cell;
+    assert(k != kNoCell);
+    const auto& items = cells_[k];
+    const auto it = std::find_if(items.begin(), items.end(),
+                                 [&](const HashEntry& e) { return e.slot() == slot; });
+    assert(it != items.end());
+    dropAt(k, static_cast<std::uint32_t>(it - items.begin()));
+  });
+}
+
+// Removes the entry at `at` from cell k: the cell's last entry takes its place (and its item
+// learns its new index), and a cell left empty is freed.
+void SpatialHash::dropAt(std::uint32_t k, std::uint32_t at) {
+  auto& items = cells_[k];
+  assert(at < items.size());
+  if (at + 1 != items.size()) {
+    items[at] = items.back();
+    repoint(items[at].slot(), k, at);
+  }
+  items.pop_back();
+  if (items.empty()) {
+    freeCell(k);
+    return;
+  }
+  const std::size_t smaller = items.capacity() / 2;
+  if (smaller >= 4 && items.size() <= smaller) {
+    const auto pool = static_cast<std::size_t>(std::countr_zero(smaller));
+    if (pool < spares_.size() && !spares_[pool].empty()) regrow(items, smaller);
+  }
+  sync(k);
+}
+
+void SpatialHash::repoint(std::uint32_t slot, std::uint32_t k, std::uint32_t at) {
+  Registration& g = regs_[slot];
+  if (!g.cached()) return;  // large items find themselves by scanning
+  const auto n = static_cast<std::size_t>(g.cells.count());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (g.cell[i] == k) {
+      g.at[i] = at;
+      return;
+    }
+  }
+  assert(false && "an entry's item is not registered in its cell");
+}
+
+// [SECTION] cells -------------------------------------------------------------------------------
+
+std::uint32_t SpatialHash::cellFor(Cell c) {
+  const std::uint32_t found = find(c).cell;
+  if (found != kNoCell) return found;
+  if ((occupied_ + 1) * 2 > table_.size()) growTable();
+  std::uint32_t k;
+  if (!freeCells_.empty()) {
+    k = freeCells_.back();
+    freeCells_.pop_back();
+    keys_[k] = c;
+  } else {
+    k = static_cast<std::uint32_t>(keys_.size());
+    keys_.push_back(c);
+    cells_.emplace_back();
+    bucketOf_.push_back(0);
+    // Every cell storage may be free at once: freeing a cell never allocates.
+    freeCells_.reserve(keys_.capacity());
+  }
+  const std::size_t mask = table_.size() - 1;
+  std::size_t i = hash(c) & mask;
+  while (table_[i].cell != kNoCell) i = (i + 1) & mask;
+  table_[i] = {c, cells_[k].data(), 0, k};
+  bucketOf_[k] = static_cast<std::uint32_t>(i);
+  ++occupied_;
+  box_ = box_.empty() ? CellRange{c.x, c.y, c.x, c.y}
+                      : CellRange{std::min(box_.x0, c.x), std::min(box_.y0, c.y),
+                                  std::max(box_.x1, c.x), std::max(box_.y1, c.y)};
+  return k;
+}
+
+// Takes an emptied cell out of the table (backward-shift deletion keeps every probe chain
+// unbroken without tombstones) and keeps its storage, buffer included, for the next new cell.
+void SpatialHash::freeCell(std::uint32_t k) {
+  const std::size_t mask = table_.size() - 1;
+  std::size_t hole = bucketOf_[k];
+  for (std::size_t j = (hole + 1) & mask; table_[j].cell != kNoCell; j = (j + 1) & mask) {
+    const std::size_t home = hash(table_[j].key) & mask;
+    // Entry j may move into the hole unless its home lies cyclically in (hole, j].
+    if (((j - home) & mask) >= ((j - hole) & mask)) {
+      table_[hole] = table_[j];
+      bucketOf_[table_[hole].cell] = static_cast<std::uint32_t>(hole);
+      hole = j;
+    }
+  }
+  table_[hole] = Bucket{};
+  freeCells_.push_back(k);
+  --occupied_;
+  // The box of occupied cells is recomputed once as many cells have emptied as half the cell
+  // storage: amortized O(1) a freed cell, and the box never stays loose for long.
+  if (++freedSinceBox_ > keys_.size() / 2 + 8) recomputeBox();
+}
+
+void SpatialHash::recomputeBox() {
+  freedSinceBox_ = 0;
+  box_ = CellRange{};
+  forEachOccupiedCell([&](Cell c, std::size_t) {
+    box_ = box_.empty() ? CellRange{c.x, c.y, c.x, c.y}
+                        : CellRange{std::min(box_.x0, c.x), std::min(box_.y0, c.y),
+                                    std::max(box_.x1, c.x), std::max(box_.y1, c.y)};
+  });
+}
+
+void SpatialHash::growTable() {
+  std::vector<Bucket> table(table_.size() * 2);
+  const std::size_t mask = table.size() - 1;
+  for (std::uint32_t k = 0; k < keys_.size(); ++k) {
+    if (cells_[k].empty()) continue;  // free storage, or the cell being created
+    std::size_t i = hash(keys_[k]) & mask;
+    while (table[i].cell != kNoCell) i = (i + 1) & mask;
+    table[i] = {keys_[k], cells_[k].data(), static_cast<std::uint32_t>(cells_[k].size()), k};
+    bucketOf_[k] = static_cast<std::uint32_t>(i);
+  }
+  table_ = std::move(table);
+}
+
+void SpatialHash::sync(std::uint32_t k) {
+  Bucket& b = table_[bucketOf_[k]];
+  b.data = cells_[k].data();
+  b.size = static_cast<std::uint32_t>(cells_[k].size());
+}
+
+// A cell's entries live in a buffer of a power-of-two capacity. Buffers are traded through
+// spare pools instead of being freed: a cell that grows takes a larger spare and gives back its
+// old one, a cell that empties to half gives its buffer back for a smaller one. So the
+// heap is only touched when more cells are crowded *at once* than ever before, not each time
+// some cell sees its own peak — which in a moving crowd goes on for tens of thousands of ticks.
+// A cell leaves a buffer as soon as its entries fit the next size down, so the buffers of a size
+// in use are the cells crowded to that size right now.
+void SpatialHash::regrow(std::vector<HashEntry>& items, std::size_t capacity) {
+  const auto pool = static_cast<std::size_t>(std::countr_zero(capacity));
+  reservePools(pool);
+  if (spares_[pool].empty()) {
+    // Out of spares: make half as many again as this size has in circulation, as a vector grows
+    // geometrically, so a new peak must be half as high again before the heap is touched again.
+    const std::size_t extra = std::max<std::size_t>(1, buffers_[pool] / 2);
+    for (std::size_t i = 0; i < extra; ++i) spares_[pool].emplace_back().reserve(capacity);
+    buffers_[pool] += extra;
+  }
+  std::vector<HashEntry> next = std::move(spares_[pool].back());
+  spares_[pool].pop_back();
+  next.assign(items.begin(), items.end());
+  if (items.capacity() > 0) {
+    const auto old = static_cast<std::size_t>(std::countr_zero(items.capacity()));
+    reservePools(old);
+    items.clear();
+    spares_[old].push_back(std::move(items));
+  }
+  items = std::move(next);
+}
+
+void SpatialHash::reservePools(std::size_t pool) {
+  // Room for many spares up front, so that trading buffers does not itself allocate.
+  while (spares_.size() <= pool) {
+    spares_.emplace_back().reserve(256);
+    buffers_.push_back(0);
+  }
+}
+
+std::size_t SpatialHash::memoryBytes() const {
+  std::size_t bytes = table_.capacity() * sizeof(Bucket) + keys_.capacity() * sizeof(Cell) +
+                      bucketOf_.capacity() * sizeof(std::uint32_t) +
+                      cells_.capacity() * sizeof(std::vector<HashEntry>) +
+                      freeCells_.capacity() * sizeof(std::uint32_t) +
+                      regs_.capacity() * sizeof(Registration) +
+                      buffers_.capacity() * sizeof(std::size_t);
+  for (const auto& c : cells_) bytes += c.capacity() * sizeof(HashEntry);
+  for (const auto& pool : spares_) {
+    bytes += pool.capacity() * sizeof(std::vector<HashEntry>);
+    for (const auto& b : pool) bytes += b.capacity() * sizeof(HashEntry);
+  }
+  return bytes;
+}
+
+}  // namespace tv::detail
