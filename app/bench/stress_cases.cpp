@@ -101,16 +101,17 @@ void badInput(std::vector<StressCase>& out) {
                    Wall w;
                    return throwsUnchanged(w.world, "-3", [&] { (void)w.world.add({0, 0, 8, -3}); });
                  }});
-  out.push_back({"World with cell size 0, -1, NaN", "tv::Error for each", [] {
+  out.push_back({"World with cell size 0, -1, NaN, 5e-324, 1e154",
+                 "tv::Error for each (cell sizes lie in [2^-485, 2^500])", [] {
                    int threw = 0;
-                   for (const double c : {0.0, -1.0, kNan}) {
+                   for (const double c : {0.0, -1.0, kNan, 5e-324, 1e154}) {
                      try {
                        World w(c);
                      } catch (const Error&) {
                        ++threw;
                      }
                    }
-                   return CaseResult{std::to_string(threw) + " of 3 threw", threw == 3};
+                   return CaseResult{std::to_string(threw) + " of 5 threw", threw == 5};
                  }});
   for (const double bad : {kNan, kInf, -kInf}) {
     out.push_back({"every mover: goal x = " + num(bad),
@@ -141,15 +142,21 @@ void badInput(std::vector<StressCase>& out) {
 void extremes(std::vector<StressCase>& out) {
   out.push_back(
       {"denormal wall width: {100, -8, 5e-324, 32}",
-       "accepted; its right edge rounds to 100 (no thickness in doubles), yet the overlap test "
-       "a.x < b.right() && b.x < a.right() holds for a mover straddling x = 100, so it blocks "
-       "like a line: stops at x = 92",
+       "tv::Error naming w=5e-324 and x=100: its right edge rounds to 100, a rect with no "
+       "interior that only blocked like a line; world unchanged",
        [] {
-         Wall w({0, 0, 8, 8}, {100, -8, 5e-324, 32});
-         const MoveResult r = w.world.move(w.mover, {200, 0});
-         return CaseResult{"ended at " + pos(r.position) + ", " +
-                               std::to_string(r.collisions.size()) + " collision(s)",
-                           r.position == Vec2{92, 0} && r.collisions.size() == 1};
+         Wall w;
+         return throwsUnchanged(w.world, "w=5e-324 is below the resolution of x=100",
+                                [&] { (void)w.world.add({100, -8, 5e-324, 32}); });
+       }});
+  out.push_back(
+      {"a wall at x = 1e155 in a world of 1e140 cells (beyond the range, 2^500 ≈ 3.27e150)",
+       "tv::Error naming x and 1e+155 (past 2^500 the exact time comparison overflows); world "
+       "unchanged",
+       [] {
+         World world(1e140);
+         return throwsUnchanged(world, "x must be within ±2^500 (about 3.27e150), but was 1e+155",
+                                [&] { (void)world.add({1e155, -1e141, 1e141, 2e141}); });
        }});
   out.push_back({"denormal start x = 5e-324, moving into the wall",
                  "stops with its right edge exactly on the wall: x = 92", [] {

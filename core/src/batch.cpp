@@ -46,6 +46,8 @@ void Batch::step(World& world, std::span<const BatchMove> moves, Filter filter, 
     const Rect r = world.rect(moves[i].item);  // throws on unknown or removed items
     requireFinite(kWhere, "goal.x", moves[i].goal.x);
     requireFinite(kWhere, "goal.y", moves[i].goal.y);
+    requireInRange(kWhere, "goal.x", moves[i].goal.x);
+    requireInRange(kWhere, "goal.y", moves[i].goal.y);
     if (!world.grid().fits(r.at(moves[i].goal))) {
       fail(kWhere, "goal {" + formatNumber(moves[i].goal.x) + ", " + formatNumber(moves[i].goal.y) +
                        "} is too far from the origin for the world's cell size");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "tv/geometry.hpp"
+
 namespace tv {
 
 std::string formatNumber(double v) {
@@ -30,6 +32,13 @@ void requireFinite(std::string_view where, std::string_view name, double v) {
 void requirePositive(std::string_view where, std::string_view name, double v) {
   if (!std::isfinite(v) || !(v > 0.0)) {
     fail(where, std::string(name) + " must be finite and > 0, but was " + formatNumber(v));
+  }
+}
+
+void requireInRange(std::string_view where, std::string_view name, double v) {
+  if (!inRange(v)) {
+    fail(where, std::string(name) + " must be within ±2^500 (about 3.27e150), but was " +
+                    formatNumber(v));
   }
 }
 

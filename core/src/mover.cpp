@@ -91,6 +91,11 @@ std::string_view moverDescription(std::string_view name) {
 }
 
 Mover::Mover(MoverSpec spec) : spec_(spec), name_(spec.name()) {
+  // A kind cast from an integer that names no mover would move nothing and report (0, 0).
+  if (static_cast<unsigned>(spec.kind) > static_cast<unsigned>(MoverKind::adaptive)) {
+    fail(kWhere, "kind must be a MoverKind (0 to 6), but was " +
+                     std::to_string(static_cast<unsigned>(spec.kind)));
+  }
   requireFinite(kWhere, "maxStep", spec.maxStep);
   if (spec.maxStep < 0) fail(kWhere, "maxStep must be >= 0, but was " + formatNumber(spec.maxStep));
   if (spec.kind == MoverKind::substep && spec.inner != MoverKind::discrete &&

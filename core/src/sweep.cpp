@@ -82,13 +82,17 @@ Sweep sweepRect(const Rect& a, Vec2 goal, const Rect& b) {
     const double v = from + s.ti * (to - from);
     return std::clamp(v, std::min(from, to), std::max(from, to));
   };
+  // A mover already resting on the face (its far edge equal to it) stays where it is: when
+  // its extent is finer than the face's ulp, several positions rest on the face, and placing it
+  // anew at the one nearest edge − size could step it back — a body under a gravity step below
+  // an ulp of the floor's top would then toggle between two of them for ever.
   if (onX) {
-    s.touch.x = goal.x > a.x ? placeBefore(b.x, a.w) : b.right();
+    s.touch.x = goal.x > a.x ? (a.right() == b.x ? a.x : placeBefore(b.x, a.w)) : b.right();
   } else {
     s.touch.x = along(a.x, goal.x);
   }
   if (onY) {
-    s.touch.y = goal.y > a.y ? placeBefore(b.y, a.h) : b.bottom();
+    s.touch.y = goal.y > a.y ? (a.bottom() == b.y ? a.y : placeBefore(b.y, a.h)) : b.bottom();
   } else {
     s.touch.y = along(a.y, goal.y);
   }

@@ -25,6 +25,10 @@ std::string describe(const Rect& r) {
          ", h=" + formatNumber(r.h) + "}";
 }
 
+bool withinMagnitude(Vec2 p) {
+  return inRange(p.x) && inRange(p.y);
+}
+
 std::string describe(ItemId id) {
   return "{index=" + std::to_string(id.index) + ", generation=" + std::to_string(id.generation) +
          "}";
@@ -59,6 +63,12 @@ decltype(auto) observed(WorldObserver& o, Call&& call, Report&& report) {
 namespace {
 double checkedCellSize(double cellSize) {
   requirePositive("tv::World", "cellSize", cellSize);
+  // Cells below 2^-485 only hold coordinates below 2^-433, where exactness may round
+  // (geometry.hpp); at 5e-324, 1 / cellSize is infinite and every rect would be refused.
+  if (!(cellSize >= 0x1p-485 && cellSize <= kMaxMagnitude)) {
+    fail("tv::World", "cellSize must be in [2^-485, 2^500] (about 1e-146 to 3.27e150), but was " +
+                          formatNumber(cellSize));
+  }
   return cellSize;
 }
 }  // namespace
@@ -104,6 +114,19 @@ void World::validateRect(const Rect& r, std::string_view where) const {
     fail(where, "rect " + describe(r) + " is too far from the origin for cell size " +
                     formatNumber(grid_.cellSize()));
   }
+  requireInRange(where, "x", r.x);
+  requireInRange(where, "y", r.y);
+  requireInRange(where, "w", r.w);
+  requireInRange(where, "h", r.h);
+  // A size below half an ulp of the coordinate leaves no interior: nothing could ever hit it.
+  if (!(r.right() > r.x)) {
+    fail(where, "w=" + formatNumber(r.w) + " is below the resolution of x=" + formatNumber(r.x) +
+                    ": x + w rounds to x, leaving the rect no interior");
+  }
+  if (!(r.bottom() > r.y)) {
+    fail(where, "h=" + formatNumber(r.h) + " is below the resolution of y=" + formatNumber(r.y) +
+                    ": y + h rounds to y, leaving the rect no interior");
+  }
   // An item is registered in every cell it meets: refuse one that would fill memory.
   const CellRange c = grid_.cellsOf(r);
   const double cells = static_cast<double>(c.x1 - c.x0 + 1) * static_cast<double>(c.y1 - c.y0 + 1);
@@ -121,6 +144,8 @@ void World::validateGoal(const Rect& r, Vec2 goal, std::string_view where) const
     fail(where, "goal {" + formatNumber(goal.x) + ", " + formatNumber(goal.y) +
                     "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
   }
+  requireInRange(where, "goal.x", goal.x);
+  requireInRange(where, "goal.y", goal.y);
 }
 
 void World::validateOptions(const MoveOptions& o, std::string_view where) const {
@@ -239,6 +264,25 @@ void World::dropExtent(const Rect& r) {
   const auto it = extents_.find(std::min(r.w, r.h));
   assert(it != extents_.end());
   if (--it->second == 0) extents_.erase(it);
+}
+
+Cell World::toCell(Vec2 p) const {
+  constexpr std::string_view where = "tv::World::toCell";
+  requireFinite(where, "x", p.x);
+  requireFinite(where, "y", p.y);
+  if (!grid_.fits({p.x, p.y, 0, 0})) {
+    fail(where, "point {" + formatNumber(p.x) + ", " + formatNumber(p.y) +
+                    "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
+  }
+  return grid_.cellAt(p);
+}
+
+ItemId World::idAt(std::uint32_t slot) const {
+  if (slot >= slots_.size() || !slots_[slot].alive) {
+    fail("tv::World::idAt", "slot " + std::to_string(slot) + " holds no item (the world has " +
+                                std::to_string(slots_.size()) + " slots)");
+  }
+  return {slot, slots_[slot].generation};
 }
 
 // [SECTION] spatial hash ------------------------------------------------------------------------
@@ -451,11 +495,13 @@ MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filte
     // A response of the user's must hand back a leg the world can sweep: refuse it before
     // anything moves, naming the response.
     if (!isFinite(next.start) || !isFinite(next.goal) || !grid_.fits(r.at(next.start)) ||
-        !grid_.fits(r.at(next.goal))) [[unlikely]] {
+        !grid_.fits(r.at(next.goal)) || !withinMagnitude(next.start) ||
+        !withinMagnitude(next.goal)) [[unlikely]] {
       fail(kMove, "response '" + std::string(responseName(c.response)) + "' returned the leg {" +
                       formatNumber(next.start.x) + ", " + formatNumber(next.start.y) + "} -> {" +
                       formatNumber(next.goal.x) + ", " + formatNumber(next.goal.y) +
-                      "}, which is not finite or too far from the origin");
+                      "}, which is not finite or too far from the origin (beyond 2^500 or the "
+                      "grid)");
     }
     c.target = next.goal;
     collisions_.push_back(c);
@@ -513,6 +559,9 @@ MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
 ResponseId World::addResponse(std::string name, ResponseFn fn) {
   constexpr std::string_view where = "tv::World::addResponse";
   if (name.empty()) fail(where, "name must not be empty");
+  if (name == "ignore") {
+    fail(where, "the name 'ignore' is reserved for response::ignore (responseId(\"ignore\"))");
+  }
   if (fn == nullptr) fail(where, "response '" + name + "' has no function");
   for (const auto& r : responses_) {
     if (r.name == name) fail(where, "a response named '" + name + "' is already registered");
@@ -567,6 +616,10 @@ void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) cons
     fail(where, "w and h must be >= 0, but the rect was " + describe(r));
   }
   if (!grid_.fits(r)) fail(where, "rect " + describe(r) + " is too far from the origin");
+  requireInRange(where, "x", r.x);
+  requireInRange(where, "y", r.y);
+  requireInRange(where, "w", r.w);
+  requireInRange(where, "h", r.h);
   out.clear();
   queryScratch_.clear();
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
@@ -591,8 +644,12 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
     return observed(*observer_, [&] { return anyOverlap(r, skip, Filter(watched)); },
                     [&](bool any) { observer_->askedOverlap(r, skip, any); });
   }
-  if (!isFinite(r) || !grid_.fits(r)) {
-    fail("tv::World::anyOverlap", "rect " + describe(r) + " is not finite or too far out");
+  if (!isFinite(r) || r.w < 0 || r.h < 0 || !inRange(r.x) || !inRange(r.y) || !inRange(r.w) ||
+      !inRange(r.h) || !grid_.fits(r)) {
+    fail("tv::World::anyOverlap",
+         "rect " + describe(r) +
+             " is not finite, has a negative size, or is out of range (within ±2^500, cell "
+             "indices below 2^52)");
   }
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
   bool any = false;
@@ -616,6 +673,8 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
     fail(where, "point {" + formatNumber(p.x) + ", " + formatNumber(p.y) +
                     "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
   }
+  requireInRange(where, "x", p.x);
+  requireInRange(where, "y", p.y);
   queryScratch_.clear();
   for (const detail::HashEntry& e : hash_->items(grid_.cellAt(p))) {
     if (contains(e.rect, p)) queryScratch_.push_back(e.slot());
@@ -645,6 +704,10 @@ std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
                     formatNumber(b.x) + ", " + formatNumber(b.y) +
                     "} is too far from the origin for cell size " + formatNumber(grid_.cellSize()));
   }
+  requireInRange(where, "a.x", a.x);
+  requireInRange(where, "a.y", a.y);
+  requireInRange(where, "b.x", b.x);
+  requireInRange(where, "b.y", b.y);
   std::vector<SegmentHit> out;
   forEachCandidate(
       ItemId::kNone, p, b, unite(p, p.at(b)), BroadPhase::swept, nullptr,

@@ -12,6 +12,7 @@
 
 #include "expect_rejected.hpp"
 #include "tv/error.hpp"
+#include "tv/mover.hpp"
 #include "tv/world.hpp"
 
 namespace {
@@ -258,6 +259,96 @@ TEST(BadInput, AnyOverlapRejectsBadRects) {
     (void)s.world.anyOverlap({0, 0, kNaN, 1});
   });
   expectRejected(s.world, {"x=1e+300"}, [&] { (void)s.world.anyOverlap({1e300, 0, 1, 1}); });
+}
+
+
+// [SECTION] inputs that were accepted and then went wrong ------------------------------------------
+
+// toCell cast a NaN or a 1e300 · (1 / size) to an integer: undefined behaviour. Refused by name.
+TEST(BadInput, ToCellRejectsNonFiniteAndFarPoints) {
+  Scene s;
+  expectRejected(s.world, {"tv::World::toCell", "x must", "nan"},
+                 [&] { (void)s.world.toCell({kNaN, 0}); });
+  expectRejected(s.world, {"tv::World::toCell", "1e+300", "too far"},
+                 [&] { (void)s.world.toCell({1e300, 0}); });
+  EXPECT_EQ(s.world.toCell({-0.5, 33}), (tv::Cell{-1, 2}));
+}
+
+// queryRect refused a negative size; anyOverlap, the same question, answered it.
+TEST(BadInput, AnyOverlapRejectsNegativeSizesLikeQueryRect) {
+  Scene s;
+  expectRejected(s.world, {"tv::World::anyOverlap", "w=-1", "negative size"},
+                 [&] { (void)s.world.anyOverlap({0, 0, -1, 1}); });
+  expectRejected(s.world, {"h=-2"}, [&] { (void)s.world.anyOverlap({0, 0, 1, -2}); });
+  EXPECT_TRUE(s.world.anyOverlap({25, 0, 0, 0})) << "a zero-size probe is a point: allowed";
+}
+
+// idAt(999) threw std::out_of_range, which a caller catching tv::Error does not catch.
+TEST(BadInput, IdAtRejectsASlotThatHoldsNoItemWithATvError) {
+  Scene s;
+  expectRejected(s.world, {"tv::World::idAt", "slot 999", "holds no item"},
+                 [&] { (void)s.world.idAt(999); });
+  expectRejected(s.world, {"slot " + std::to_string(s.removed.index)},
+                 [&] { (void)s.world.idAt(s.removed.index); });
+  EXPECT_EQ(s.world.idAt(s.wall.index), s.wall);
+}
+
+// A MoverSpec whose kind was cast from an integer that names no mover moved nothing and
+// reported (0, 0).
+TEST(BadInput, AMoverKindThatNamesNoMoverIsRejected) {
+  tv::MoverSpec spec;
+  spec.kind = static_cast<tv::MoverKind>(17);
+  try {
+    const tv::Mover m(spec);
+    ADD_FAILURE() << "kind 17 was accepted";
+  } catch (const tv::Error& e) {
+    EXPECT_STREQ(e.what(), "tv::Mover: kind must be a MoverKind (0 to 6), but was 17");
+  }
+  spec.kind = tv::MoverKind::adaptive;  // the last one is fine
+  EXPECT_NO_THROW((void)tv::Mover(spec));
+}
+
+// "ignore" is response::ignore's name (responseId("ignore")): a response registered under it
+// would be unreachable by name.
+TEST(BadInput, TheNameIgnoreIsReservedForResponseIgnore) {
+  Scene s;
+  expectRejected(s.world, {"tv::World::addResponse", "'ignore'", "reserved"},
+                 [&] { (void)s.world.addResponse("ignore", &tv::touchResponse); });
+  EXPECT_EQ(s.world.responseId("ignore"), tv::response::ignore);
+  EXPECT_NO_THROW((void)s.world.addResponse("ignored", &tv::touchResponse));
+}
+
+// World(5e-324) was accepted, but 1 / 5e-324 is infinite and every rect was then refused.
+TEST(BadInput, CellSizesOutsideTwoToTheMinus485AndTwoToThe500AreRejected) {
+  for (const double bad : {5e-324, 1e-300, 0x1p-486, 0x1p501, 1e154, 1e307}) {
+    try {
+      const World w(bad);
+      ADD_FAILURE() << "World(" << bad << ") did not throw";
+    } catch (const tv::Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "tv::World: cellSize must be in [2^-485, 2^500] (about 1e-146 to 3.27e150), "
+                "but was " + tv::formatNumber(bad));
+    }
+  }
+  for (const double good : {0x1p-485, 1e-100, 0.1, 64.0, 0x1p500}) {
+    const World w(good);
+    EXPECT_EQ(w.cellSize(), good);
+  }
+}
+
+// w = 1e-30 at x = 1e9 is far below an ulp of x: right() == x, a rect with no interior that
+// nothing can ever hit. Refused, naming both values.
+TEST(BadInput, ARectWhoseSizeRoundsAwayHasNoInteriorAndIsRejected) {
+  Scene s;
+  expectRejected(s.world, {"tv::World::add", "w=1e-30", "x=1e+09", "no interior"},
+                 [&] { (void)s.world.add({1e9, 0, 1e-30, 1}); });
+  expectRejected(s.world, {"h=1e-30", "y=-1e+09"},
+                 [&] { (void)s.world.add({0, -1e9, 1, 1e-30}); });
+  expectRejected(s.world, {"tv::World::update", "w=5e-324"},
+                 [&] { s.world.update(s.mover, Rect{100, 0, 5e-324, 32}); });
+  // The same sizes at the origin have an interior: accepted.
+  EXPECT_NO_THROW((void)s.world.add({0, 200, 1e-30, 1}));
+  EXPECT_NO_THROW((void)s.world.add({1e9, 0, 1e-6, 1})) << "over half an ulp of 1e9 (6e-8)";
 }
 
 }  // namespace

@@ -137,6 +137,40 @@ TEST(ExactContact, ABodyRestingUnderGravityNeverDriftsInAMillionTicks) {
   }
 }
 
+// A floor whose top is just above a power of two (512 + 2 ulps) under a body whose y is just
+// below 511, in the binade below: there an ulp of y is half an ulp of the top, so two positions,
+// 511 - 2^-44 and 511, both rest on the top (y + h rounds to it). Gravity of 6e-14 px a tick,
+// below an ulp of the top, moved the body from the one to the other (no overlap: a free move),
+// and the next tick's hit placed it back at the first (the one nearest top - h): it toggled for
+// ever and floor(y) flickered between rows 510 and 511. A body already on the face now stays
+// where it is, so after at most one settling step of an ulp it rests.
+//
+//   y = 511 - 2^-44 or 511   +--+  body, h = top - 511 + 4e-14
+//                            |  |
+//   top = 512 + 2^-42 =====================  floor
+TEST(ExactContact, ABodyUnderASubUlpGravityOnAFloorJustAboveAPowerOfTwoRests) {
+  const double top = 512.0 + 0x1p-42;
+  const double h = (top - 511) + 4e-14;
+  World w(64);
+  (void)w.add({0, top, 100, 16});
+  const ItemId body = w.add({10, tv::placeBefore(top, h), 8, h});
+  // The premise: both positions rest exactly on the top.
+  ASSERT_EQ(w.rect(body).y, 511 - 0x1p-44);
+  ASSERT_EQ((511 - 0x1p-44) + h, top);
+  ASSERT_EQ(511 + h, top);
+  const double g = 6e-14;
+  (void)w.move(body, {10, w.rect(body).y + g});  // may settle once, by an ulp
+  const Vec2 rest = w.rect(body).position();
+  long moved = 0;
+  for (int t = 0; t < 1000; ++t) {
+    const Vec2 end = w.move(body, {10, w.rect(body).y + g}).position;
+    moved += end != rest;
+    EXPECT_EQ(w.rect(body).bottom(), top);
+  }
+  EXPECT_EQ(moved, 0) << "toggled between " << rest.y << " and another position";
+  EXPECT_EQ(std::floor(w.rect(body).y), std::floor(rest.y));
+}
+
 // Pressing sideways into a wall every tick (a player holding "right") is the same.
 TEST(ExactContact, ABodyPressingIntoAWallNeverDrifts) {
   World w(64);

@@ -7,8 +7,9 @@
 // - a hit is when the open interiors intersect at some time before the goal; ti is the exact
 //   entry time; the normal is on the axis entered last (an exact tie is a corner: x normal);
 // - hits are ordered by exact ti, ordinary hits before corners, then by add order;
-// - the touch coordinate on the normal's axis is tv::placeBefore(edge, size) or the obstacle's
-//   far edge; the other is start + ti * (goal - start) computed exactly, rounded to nearest;
+// - the touch coordinate on the normal's axis is tv::placeBefore(edge, size) (or the start's,
+//   when the mover's far edge already rests on that edge) or the obstacle's far edge; the other
+//   is start + ti * (goal - start) computed exactly, rounded to nearest;
 // - a leg that starts inside an obstacle is resolved as core/src/sweep.cpp does (smallest push
 //   out in the order up, left, right, down; ti = minus the intersection area, in double);
 // - slide: the next leg runs from the touch to the goal with the normal's coordinate replaced;
@@ -186,8 +187,14 @@ std::optional<RefHit> refSweep(const Rect& a, Vec2 goal, const Rect& b) {
   const auto along = [&](double from, double to) {
     return roundNearest(Q(from) + h.ti * (Q(to) - Q(from)));
   };
-  h.touch.x = onX ? (goal.x > a.x ? tv::placeBefore(b.x, a.w) : b.right()) : along(a.x, goal.x);
-  h.touch.y = onY ? (goal.y > a.y ? tv::placeBefore(b.y, a.h) : b.bottom()) : along(a.y, goal.y);
+  // Already resting on the face (far edge equal to it): the coordinate stays.
+  const auto nearSide = [](double s, double size, double s1, double edge) {
+    return s1 == edge ? s : tv::placeBefore(edge, size);
+  };
+  h.touch.x = onX ? (goal.x > a.x ? nearSide(a.x, a.w, a.right(), b.x) : b.right())
+                  : along(a.x, goal.x);
+  h.touch.y = onY ? (goal.y > a.y ? nearSide(a.y, a.h, a.bottom(), b.y) : b.bottom())
+                  : along(a.y, goal.y);
   h.normal = onX ? Vec2{goal.x > a.x ? -1.0 : 1.0, 0.0} : Vec2{0.0, goal.y > a.y ? -1.0 : 1.0};
   return h;
 }

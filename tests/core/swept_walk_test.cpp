@@ -17,20 +17,22 @@ using tv::Rect;
 using tv::Vec2;
 using tv::World;
 
-// Cells of 3.1e-7 at y = 1e9, where a double's step is 1.2e-7: a cell is under 3 ulps of the
-// walked coordinate, and the walk's column boundaries (c * size) are off by a good part of a
-// cell. The walk must still visit the obstacle's cells.
+// Cells of 7.5e-7 at y = 1e9, where a double's step is 1.2e-7: a cell is 6 ulps of the walked
+// coordinate, and the walk's column boundaries (c * size) are off by a good part of a cell. The
+// walk must still visit the obstacle's cells. (The issue's own case, cells of 3.1e-7, had a
+// mover 4.5e-8 tall at y = 1e9: below half an ulp, so y + h == y, and such a rect is now refused
+// as having no interior; this one is 1.5e-7 tall.)
 //
-//        |##|     the obstacle, 1e-9 wide, 1.6e-6 tall, at x ≈ -2.8e-6
-//    \            the mover (4.9e-9 × 4.5e-8) moving down-left through it,
-//     \           y from 1e9 + 5e-7 to 1e9 + 1e-5
+//        |##|     the wall, 3.7e-9 wide and 4.1e-6 tall, at x ≈ 2.3e-6
+//    \            the mover (1.5e-8 × 1.5e-7) moving right and up through it,
+//     \           x from 1.25e-6 to 7.1e-6, y from 1e9 - 6e-7 to 1e9 - 9.3e-6
 TEST(SweptWalk, CellsAFewUlpsOfTheCoordinatesWideAreStillAllVisited) {
-  World w(3.131108555691603e-07);
-  (void)w.add({-2.7988117028621754e-06, 1000000000.000005, 1.0698092776024877e-09,
-               1.5774021358027394e-06});
-  const ItemId m = w.add({3.3266812179668667e-07, 1000000000.0000005, 4.8714620361435149e-09,
-                          4.4847534703069933e-08});
-  const Vec2 g{-6.2030617672343595e-06, 1000000000.00001};
+  World w(7.4685078275118712e-07);
+  (void)w.add({2.2734653758344361e-06, 999999999.99999797, 3.6933845261853752e-09,
+               4.0978293996286454e-06});
+  const ItemId m = w.add({1.2512294323018248e-06, 999999999.9999994, 1.4946155242873129e-08,
+                          1.5102090485111685e-07});
+  const Vec2 g{7.0984202029503844e-06, 999999999.9999907};
   // The bounds broad phase (every cell of the bounding box) is the reference.
   const tv::MoveResult bounds = w.check(m, g, {}, {tv::BroadPhase::bounds});
   ASSERT_EQ(bounds.collisions.size(), 1u);
@@ -41,9 +43,9 @@ TEST(SweptWalk, CellsAFewUlpsOfTheCoordinatesWideAreStillAllVisited) {
 }
 
 // The same shape at random: a thin wall (a few thousandths of a cell wide, a few cells tall)
-// on the path of a mover under a cell, moving some 30 cells at y = 1e9 with cells of 2 to 8
-// ulps. Swept and bounds always agree. The opposite case, 16 px cells at the origin, runs in the
-// same loop.
+// on the path of a mover under a cell (1 to 3 ulps tall), moving some 30 cells at y = 1e9 with
+// cells of 2 to 8 ulps. Swept and bounds always agree. The opposite case, 16 px cells at the
+// origin, runs in the same loop.
 TEST(SweptWalk, AgreesWithTheBoundsBroadPhaseForCellsDownToAFewUlps) {
   std::mt19937_64 g(20240601);
   const auto unit = [&] { return static_cast<double>(g() >> 11) * 0x1p-53; };
@@ -51,11 +53,14 @@ TEST(SweptWalk, AgreesWithTheBoundsBroadPhaseForCellsDownToAFewUlps) {
   for (int i = 0; i < 40000; ++i) {
     const bool tiny = i % 4 != 0;
     const double offset = tiny ? 1e9 : 0.0;
-    const double cell = tiny ? (2 + 6 * unit()) * 1.1920928955078125e-07 : 16.0;
+    const double ulp = 1.1920928955078125e-07;  // of 1e9
+    const double cell = tiny ? (2 + 6 * unit()) * ulp : 16.0;
     World w(cell);
     const auto pos = [&](double spread) { return (unit() - 0.5) * spread * cell; };
     const auto size = [&](double s) { return s * cell * (0.5 + unit()); };
-    const Rect mover{pos(20), offset + pos(20), size(0.016), size(0.14)};
+    // At 1e9 a rect's height must be at least an ulp to have an interior.
+    const Rect mover{pos(20), offset + pos(20), size(0.016),
+                     tiny ? ulp * (1 + 2 * unit()) : size(0.14)};
     const Vec2 goal{pos(40), offset + pos(40)};
     const double t = unit();
     const Vec2 on = mover.position() + (goal - mover.position()) * t;

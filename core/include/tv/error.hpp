@@ -20,6 +20,8 @@ class Error : public std::invalid_argument {
 /// Each throws `Error` like "tv::World::add: w must be finite and > 0, but was -1".
 void requireFinite(std::string_view where, std::string_view name, double v);
 void requirePositive(std::string_view where, std::string_view name, double v);
+/// "x must be within ±2^500 (about 3.27e150), but was 1e+155": the range of geometry.hpp.
+void requireInRange(std::string_view where, std::string_view name, double v);
 [[noreturn]] void fail(std::string_view where, std::string_view what);
 
 }  // namespace tv

@@ -13,6 +13,22 @@
 /// - After a hit, the mover is placed against the obstacle from the obstacle's edge (see
 ///   `placeBefore`), so a resting body's edge equals the obstacle's edge bit for bit whenever a
 ///   double allows it, and is never inside it.
+///
+/// Range — where the exact arithmetic behind these rules holds:
+/// - Every coordinate, size and goal the World accepts has a magnitude of at most
+///   kMaxMagnitude = 2^500 ≈ 3.27e150, and every cell size lies in [2^-485, 2^500]; anything
+///   beyond is refused with tv::Error naming the value. Within it, edges stay within 2^501 and
+///   their differences within 2^502, so the exact time comparison (products of two differences,
+///   summed sixteen at a time) stays within 2^1008, far from overflow (2^1024), and no
+///   displacement overflows to infinity.
+/// - Exactness also needs the products of two edge differences not to underflow. That holds
+///   whenever every coordinate and size is a multiple of 2^-537 — every double of magnitude at
+///   least 2^-485 ≈ 1.0e-146 is, and so is 0: then every edge and difference is a multiple of
+///   2^-537, each product a multiple of 2^-1074, and its rounding error (fma) exact. Nonzero
+///   values closer to 0 are accepted (a step of one ulp at 0 is 5e-324), but a decision that
+///   compares two such tiny differences may round.
+/// A rect must also have an interior: x + w > x and y + h > y once rounded (a width below half
+/// an ulp of x would give right() == x).
 
 #include <cmath>
 #include <cstdint>
@@ -79,6 +95,11 @@ struct Rect {
 /// than the edge's (a position near -1e6 against an edge of 1e-3), or when every sum c + size is
 /// a rounding tie and the edge's mantissa is odd (edge 0.9, size 0.2).
 [[nodiscard]] double placeBefore(double edge, double size);
+
+inline constexpr double kMaxMagnitude = 0x1p500;  ///< ≈ 3.27e150
+
+/// True when |v| <= kMaxMagnitude (false for NaN and infinities).
+[[nodiscard]] inline bool inRange(double v) { return std::fabs(v) <= kMaxMagnitude; }
 
 /// True when every field is finite.
 [[nodiscard]] inline bool isFinite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }

@@ -46,7 +46,8 @@ class Grid {
   [[nodiscard]] constexpr double cellSize() const { return size_; }
 
   /// The cell holding coordinate v. Monotone in v, so two closed intervals that meet always
-  /// share a cell, whatever the rounding of v · (1 / size).
+  /// share a cell, whatever the rounding of v · (1 / size). Precondition: v finite with
+  /// |v / size| < 2^52 (see `fits`; World::toCell checks it and throws tv::Error).
   [[nodiscard]] std::int64_t index(double v) const {
     // floor() without the libm call: truncate, then step down for negative non-integers.
     // Exact for every |v · inverse| < 2^63, far beyond the 2^52 the world allows.

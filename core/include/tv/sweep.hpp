@@ -26,8 +26,9 @@ struct Sweep {
   /// Unit axis normal pointing from the obstacle towards the mover.
   Vec2 normal;
   /// Mover position at contact. The coordinate on the normal's axis comes from the obstacle's
-  /// edge (see `placeBefore`), never from start + ti·move; for an overlap it is the smallest
-  /// push out of the obstacle.
+  /// edge (see `placeBefore`), never from start + ti·move — or stays the start's when the mover
+  /// already rests on that edge (ti 0), so a resting body is never stepped back; for an overlap
+  /// it is the smallest push out of the obstacle.
   Vec2 touch;
   /// Entered on both axes at the same instant: an exact corner hit. Such a hit sorts after an
   /// ordinary hit at the same ti, so a neighbour tile's corner never pre-empts the face the

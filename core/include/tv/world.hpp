@@ -84,12 +84,15 @@ struct SegmentHit {
 
 class World {
  public:
-  /// `cellSize`: side of a spatial-hash cell in world units, finite and > 0. Default 64.
+  /// `cellSize`: side of a spatial-hash cell in world units, in [2^-485, 2^500] ≈ [1e-146,
+  /// 3.27e150] (the range of geometry.hpp). Default 64.
   /// A size near the typical item or tile size keeps candidates per move low.
   explicit World(double cellSize = 64.0);
 
   // -- items ---------------------------------------------------------------------------------
-  /// Adds a rect (finite, w > 0, h > 0, meeting at most 2^24 cells) and returns its handle.
+  /// Adds a rect and returns its handle. The rect must be finite with w > 0 and h > 0, every
+  /// field within ±2^500 (geometry.hpp), with an interior (x + w > x and y + h > y once
+  /// rounded), cell indices below 2^52, and meet at most 2^24 cells.
   ItemId add(const Rect& r);
   /// Removes the item; its handle is never valid again. A slot is reused by later adds with a
   /// new generation, up to 2^32 − 1 times, then retired (a few bytes that are never reused).
@@ -117,7 +120,8 @@ class World {
   // -- grid ----------------------------------------------------------------------------------
   [[nodiscard]] const Grid& grid() const { return grid_; }
   [[nodiscard]] double cellSize() const { return grid_.cellSize(); }
-  [[nodiscard]] Cell toCell(Vec2 p) const { return grid_.cellAt(p); }
+  /// The cell holding `p`; throws tv::Error when p is not finite or too far out for the grid.
+  [[nodiscard]] Cell toCell(Vec2 p) const;
   [[nodiscard]] Vec2 toWorld(Cell c) const { return grid_.origin(c); }
   /// Slots of the items registered in a cell (see idAt), empty if the cell was never used.
   [[nodiscard]] std::vector<std::uint32_t> cellItems(Cell c) const;
@@ -134,8 +138,9 @@ class World {
     for (std::uint32_t i = 0; i < slots_.size(); ++i)
       if (slots_[i].alive) f(ItemId{i, slots_[i].generation}, slots_[i].rect);
   }
-  /// Handle of the live item stored in a slot (as listed by cellItems).
-  [[nodiscard]] ItemId idAt(std::uint32_t slot) const { return {slot, slots_.at(slot).generation}; }
+  /// Handle of the live item stored in a slot (as listed by cellItems); throws tv::Error when
+  /// the slot holds no item.
+  [[nodiscard]] ItemId idAt(std::uint32_t slot) const;
 
   // -- moving --------------------------------------------------------------------------------
   /// What `move` would do, without doing it.
@@ -148,7 +153,8 @@ class World {
                                    const MoveOptions& options = {}) const;
 
   // -- responses -----------------------------------------------------------------------------
-  /// Registers a response that filters can then return. Names must be unique and non-empty.
+  /// Registers a response that filters can then return. Names must be unique and non-empty,
+  /// and not "ignore" (the special response::ignore).
   ResponseId addResponse(std::string name, ResponseFn fn);
   [[nodiscard]] std::string_view responseName(ResponseId id) const;
   /// Runs the response `c.response` on a collision: the next leg of the move.
