@@ -234,6 +234,7 @@ class World {
   void addExtent(const Rect& r);
   void dropExtent(const Rect& r);
 
+  bool reachesNothing(ItemId self, const Rect& r, Vec2 goal, Filter filter) const;
   MoveResult run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
                  const MoveOptions& o) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
