@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/still.hpp"
 
@@ -77,6 +78,11 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   const sim::Params params = ui::paramsFor(scene, o);
   const ui::Overlays overlays = ui::overlaysFor(o);
   selected_ = o.body;
+  {
+    ui::PictureOptions named = o;
+    named.movers = moverNames;
+    ui::refuseDuplicateMovers(named);
+  }
   std::vector<MoverSpec> movers = parseMovers(moverNames, o.compare ? "--compare" : "--mover");
 
   states_.assign(1, ui::DebuggerState{});
@@ -148,6 +154,10 @@ void Debugger::build(const sim::SceneDef& scene, const sim::Params& params,
   std::vector<std::unique_ptr<ui::Session>> sessions;
   for (const MoverSpec& m : movers) {
     sessions.push_back(std::make_unique<ui::Session>(scene, params, m, std::nullopt));
+    const sim::Simulation& s = sessions.back()->sim();
+    // A tick that would take seconds is refused here, before anything runs (and freezes).
+    if (auto why = app::workLimitExceeded(params, s.moverSpec(), s.bodies().size()))
+      throw Error(*why);
   }
   const std::size_t bodies = sessions.front()->sim().bodies().size();
   if (selected_ && *selected_ >= bodies)
@@ -298,6 +308,21 @@ void Debugger::applyActions(const ui::Actions& a) {
   } catch (const Error& e) {
     reportError(e.what());
   }
+}
+
+bool Debugger::tune(const std::string& param, double value) {
+  ui::DebuggerState& st = states_[0];
+  try {
+    st.draft.set(param, value);
+  } catch (const Error& e) {
+    reportError(e.what());
+    return false;
+  }
+  message_.clear();
+  ui::Actions a;
+  a.restart = true;
+  applyActions(a);
+  return message_.empty();
 }
 
 void Debugger::run(Command c) {

@@ -55,7 +55,7 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   // the end so the marks do not depend on how fast the machine is.
   divergence_.advance(pinned_ ? 1e9 : 3.0);
   if (showSweep_) {
-    const MoverSpec& m = movers_.front();
+    const MoverSpec& m = sweptMover();
     // The whole scene where the look-ahead found its end (bounded), else up to now.
     std::uint64_t horizon = std::max<std::uint64_t>(tick(), 1);
     if (divergence_.done())
@@ -332,7 +332,10 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
 // [SECTION] world: one mover, side by side, overlaid -----------------------------------------
 
 void Debugger::drawMain(ImVec2 origin, ImVec2 size) {
-  for (auto& st : states_) st.paused = paused_;
+  for (auto& st : states_) {
+    st.paused = paused_;
+    st.cameraMoved = false;
+  }
   if (follow_) {
     const Rect r = followRect();
     for (auto& st : states_) st.frameView = r;
@@ -394,11 +397,17 @@ void Debugger::drawCompareSideBySide(ImVec2 origin, ImVec2 size) {
 
 void Debugger::syncCameras() {
   // The panels are the same size: a zoom or pan in one is applied to all, so the movers are
-  // always compared over the same ground.
+  // always compared over the same ground. The camera itself is copied (centre and scale; each
+  // panel places it on its own screen rect): re-framing the view would fit it inside the
+  // panel's safe area and zoom out a little on every frame of a drag.
   for (std::size_t k = 0; k < states_.size(); ++k) {
-    if (states_[k].frameView) continue;
-    const Rect view = states_[k].camera.view();
-    for (auto& st : states_) st.frameView = view;
+    if (!states_[k].cameraMoved) continue;
+    const ui::Camera cam = states_[k].camera;
+    for (auto& st : states_) {
+      st.camera = cam;
+      st.frameView.reset();
+      st.cameraMoved = false;
+    }
     return;
   }
 }
@@ -488,21 +497,43 @@ void Debugger::drawPicker() {
   ImGui::EndPopup();
 }
 
+const MoverSpec& Debugger::sweptMover() const {
+  for (const MoverSpec& m : movers_) {
+    if (m.kind == MoverKind::substep) return m;
+  }
+  return movers_.front();
+}
+
 void Debugger::drawSweep() {
-  const MoverSpec& m = movers_.front();
-  const double current = m.kind == MoverKind::substep ? sessions_.front()->sim().moverSpec().maxStep
+  const MoverSpec& m = sweptMover();
+  const auto at = std::find_if(movers_.begin(), movers_.end(),
+                               [&](const MoverSpec& x) { return &x == &m; });
+  const std::size_t k = static_cast<std::size_t>(at - movers_.begin());
+  const double current = m.kind == MoverKind::substep ? sessions_[k]->sim().moverSpec().maxStep
                                                       : params_.get(sim::param::substep);
-  if (const auto length = sweep_.draw(&showSweep_, current)) {
-    sim::Params p = params_;
-    std::vector<MoverSpec> movers = movers_;
-    if (movers.front().kind != MoverKind::substep) movers.front() = sweep_.mover();
-    try {
-      p.set(sim::param::substep, *length);
-      build(*scene_, p, std::move(movers), tick());
-      message_.clear();
-    } catch (const Error& e) {
-      reportError(e.what());
+  if (const auto length = sweep_.draw(&showSweep_, current)) useSubstepLength(*length);
+}
+
+void Debugger::useSubstepLength(double length) {
+  const MoverSpec& m = sweptMover();
+  sim::Params p = params_;
+  std::vector<MoverSpec> movers = movers_;
+  // The length applies to every substep mover through the parameter. With none, one mover
+  // becomes substep-discrete (what the sweep ran); a comparison gains it as a new panel, so
+  // its "before" stays.
+  if (m.kind != MoverKind::substep) {
+    if (compare()) {
+      movers.push_back(parseMover("substep-discrete"));
+    } else {
+      movers.front() = parseMover("substep-discrete");
     }
+  }
+  try {
+    p.set(sim::param::substep, length);
+    build(*scene_, p, std::move(movers), tick());
+    message_.clear();
+  } catch (const Error& e) {
+    reportError(e.what());
   }
 }
 

@@ -103,7 +103,7 @@ int interactive(const ViewerOptions& o) {
   if (!loaded && !shot) debugger.openHelp();  // the first run opens Help
 
   WindowConfig config{o.picture.width, o.picture.height, "Tunnelvision debugger", shot};
-  if (loaded && !o.picture.sizeGiven) {
+  if (loaded && !o.picture.windowGiven) {
     config.width =
         static_cast<int>(std::clamp(settings.getNumber("window.width", 1280), 320.0, 8192.0));
     config.height =

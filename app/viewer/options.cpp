@@ -9,7 +9,7 @@ namespace tv::viewer {
 
 const char* const kUsage =
     "usage: tv-debugger [--scene NAME] [--mover NAME | --compare A,B[,C...]] [--tick N]\n"
-    "                   [--size WxH] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
+    "                   [--window WxH] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
     "                   [--render-hz R] [--hide a,b] [--show a,b] [--PARAM VALUE ...]\n"
     "                   [--overlay] [--sweep] [--ui-scale S] [--no-settings]\n"
     "                   [--frames K --screenshot FILE.png | --app-screenshot FILE.png]\n"

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "imgui.h"
+#include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/sim/simulation.hpp"
 #include "tv/ui/palette.hpp"
@@ -70,6 +71,12 @@ bool SubstepSweep::advance() {
     sim::Params params = params_;
     params.set(sim::param::substep, p.length);
     sim::Simulation s(*scene_, params, mover_);
+    // A length that cuts the moves into millions of pieces would freeze the window: skipped.
+    if (app::workLimitExceeded(params, s.moverSpec(), s.bodies().size())) {
+      p.skipped = true;
+      points_.push_back(p);
+      return true;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<Vec2> at = positionsAfter(s, ticks_);
     const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - t0;
@@ -142,6 +149,11 @@ std::optional<double> SubstepSweep::draw(bool* open, double currentLength) {
         picked = p.length;
       }
       ImGui::TableNextColumn();
+      if (p.skipped) {
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(ui::palette::kDim),
+                           "skipped: over %g s a tick", app::kMaxSecondsPerTick);
+        continue;
+      }
       ImGui::TextColored(
           ImGui::ColorConvertU32ToFloat4(p.tunnelled ? ui::palette::kBad : ui::palette::kGood),
           "%" PRIu64, p.tunnelled);

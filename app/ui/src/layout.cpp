@@ -4,6 +4,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 
 #include "tv/ui/palette.hpp"
 
@@ -48,6 +49,27 @@ bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size) {
   return open;
 }
 
+// Puts the next item on this line when `text` fits there, else on the next line.
+void sameLineIfFits(const char* text) {
+  ImGui::SameLine();
+  if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(text).x) ImGui::NewLine();
+}
+
+// The first of `variants` (longest first) that fits the line; the last one otherwise, wrapped.
+void textFitting(std::initializer_list<const char*> variants, ImU32 colour) {
+  const float room = ImGui::GetContentRegionAvail().x;
+  const char* chosen = *(variants.end() - 1);
+  for (const char* v : variants) {
+    if (ImGui::CalcTextSize(v).x <= room) {
+      chosen = v;
+      break;
+    }
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", chosen);
+  ImGui::PopStyleColor();
+}
+
 }  // namespace
 
 std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerState& st,
@@ -68,10 +90,12 @@ std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerS
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
     st.camera.zoom(std::pow(1.2, static_cast<double>(io.MouseWheel)), io.MousePos);
     st.frameView.reset();
+    st.cameraMoved = true;
   }
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
     st.camera.pan(io.MouseDelta);
     st.frameView.reset();
+    st.cameraMoved = true;
   }
   if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
     const Vec2 p = st.camera.toWorld(io.MousePos);
@@ -185,40 +209,60 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
     const std::string name = s.sim().moverSpec().name();
     place({x0 + w * static_cast<float>(k), y0 + top}, {w, h});
     if (ImGui::Begin(name.c_str(), nullptr, kFixed | ImGuiWindowFlags_NoScrollbar)) {
-      // Three lines of numbers under the picture: the verdict, the traced move, the cost.
-      const float stats = ImGui::GetTextLineHeightWithSpacing() * 3.0f + 4.0f;
+      // Lines of numbers under the picture: the verdict, the traced move, the cost; a narrow
+      // panel gets a line more, for the verdict's failure counts.
+      const float lines = w < 420.0f ? 4.0f : 3.0f;
+      const float stats = ImGui::GetTextLineHeightWithSpacing() * lines + 4.0f;
       const ImVec2 avail = ImGui::GetContentRegionAvail();
       if (auto pick = worldView("##world", s, st, {avail.x, std::max(avail.y - stats, 40.0f)})) {
         picked = PanelPick{k, *pick};
       }
       const sim::Counters& c = s.sim().counters();
       const std::size_t bodies = s.sim().bodies().size();
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.tunnelled ? pal::kBad : pal::kGood),
-                         "tunnelled so far: %" PRIu64 " of %zu", c.tunnelled, bodies);
+      char text[160];
+      std::snprintf(text, sizeof text, "tunnelled so far: %" PRIu64 " of %zu", c.tunnelled, bodies);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.tunnelled ? pal::kBad : pal::kGood), "%s",
+                         text);
       // The scene's other failure counts, where any panel has one, so the columns line up.
       for (const auto& [label, field] : kFailures) {
         const bool used =
             std::any_of(sessions.begin(), sessions.begin() + static_cast<std::ptrdiff_t>(n),
                         [&](const Session* o) { return o->sim().counters().*field != 0; });
         if (!used) continue;
-        ImGui::SameLine();
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.*field ? pal::kBad : pal::kGood),
-                           " %s %" PRIu64, label, c.*field);
+        std::snprintf(text, sizeof text, " %s %" PRIu64, label, c.*field);
+        sameLineIfFits(text);
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.*field ? pal::kBad : pal::kGood), "%s",
+                           text);
       }
-      ImGui::SameLine();
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "  hits %" PRIu64, c.hits);
+      std::snprintf(text, sizeof text, "  hits %" PRIu64, c.hits);
+      sameLineIfFits(text);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "%s", text);
       const auto moves = s.moves();
       if (!moves.empty()) {
         const MoveTrace& m = moves.back().trace;
-        ImGui::Text("tick %" PRIu64 " move: %zu cells, %zu candidates, %zu hits", moves.back().tick,
-                    m.cells.size(), m.candidates.size(), m.hits.size());
+        char full[160], brief[160];
+        std::snprintf(full, sizeof full, "tick %" PRIu64 " move: %zu cells, %zu candidates, %zu hits",
+                      moves.back().tick, m.cells.size(), m.candidates.size(), m.hits.size());
+        std::snprintf(brief, sizeof brief, "tick %" PRIu64 ": %zu cells, %zu cand., %zu hits",
+                      moves.back().tick, m.cells.size(), m.candidates.size(), m.hits.size());
+        textFitting({full, brief}, pal::kLabel);
+      } else if (s.selected() && *s.selected() < bodies) {
+        // Say why: a body that has stopped no longer moves, so there is no move to trace.
+        textFitting({s.sim().bodies()[*s.selected()].active ? "no move traced yet"
+                                                             : "no move traced: the body has stopped",
+                     s.sim().bodies()[*s.selected()].active ? "no move yet" : "stopped: no move"},
+                    pal::kDim);
       } else {
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "no move traced");
+        textFitting({"no body traced"}, pal::kDim);
       }
       const sim::TraceStats& t = s.sim().traceStats();
       if (t.moves > 0) {
-        ImGui::Text("candidates per move: %.2f mean over %" PRIu64 " moves",
-                    static_cast<double>(t.candidates) / static_cast<double>(t.moves), t.moves);
+        const double mean = static_cast<double>(t.candidates) / static_cast<double>(t.moves);
+        char full[160], brief[160];
+        std::snprintf(full, sizeof full, "candidates per move: %.2f mean over %" PRIu64 " moves",
+                      mean, t.moves);
+        std::snprintf(brief, sizeof brief, "cand./move: %.2f (%" PRIu64 " moves)", mean, t.moves);
+        textFitting({full, brief}, pal::kLabel);
       }
     }
     ImGui::End();

@@ -21,6 +21,9 @@ struct DebuggerState {
   /// The world rect to frame every frame (headless, or "frame" pressed); none: the camera
   /// keeps whatever the person zoomed and panned to.
   std::optional<Rect> frameView;
+  /// Set by the world view when a wheel zoom or a right drag moved the camera this frame; the
+  /// comparison copies that camera to its other panels and clears it.
+  bool cameraMoved = false;
   /// Screen pixels at the top and bottom of the world view that the HUD and the legend covered
   /// in the last frame: framing keeps the action clear of them.
   float coveredTop = 0.0f;
