@@ -75,7 +75,18 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   overlay_ = overlay_ || options.overlay;
   showSweep_ = options.sweep;
   const sim::SceneDef& scene = ui::sceneFor(o);
-  const sim::Params params = ui::paramsFor(scene, o);
+  sim::Params params = ui::paramsFor(scene, o);
+  // Tuned values come back with their scene, unless the command line sets any parameter.
+  if (settings && o.params.empty() && settings->get("params.scene") == scene.name) {
+    const sim::Params defaults = scene.defaults();
+    for (const sim::ParamSpec& spec : defaults.specs()) {
+      try {
+        params.set(spec.name, settings->getNumber("param." + spec.name, params.get(spec.name)));
+      } catch (const Error&) {
+        // A hand-edited value out of range: the default stays.
+      }
+    }
+  }
   const ui::Overlays overlays = ui::overlaysFor(o);
   selected_ = o.body;
   {
@@ -141,6 +152,9 @@ void Debugger::store(Settings& s) const {
   s.setNumber("speed", speed_);
   s.setNumber("render-hz", states_[0].renderHz);
   s.setBool("help.seen", true);
+  s.set("params.scene", scene_->name);
+  for (std::size_t i = 0; i < params_.specs().size(); ++i)
+    s.setNumber("param." + params_.specs()[i].name, params_.values()[i]);
   for (const ui::OverlayToggle& t : ui::overlayToggles()) {
     s.setBool(std::string("overlay.") + t.name, states_[0].overlays.*t.flag);
   }
@@ -254,7 +268,10 @@ void Debugger::advance(double seconds) {
   // Nothing more can happen: stop, so the interesting ticks stay in the ring.
   const bool finished = std::all_of(sessions_.begin(), sessions_.end(),
                                     [](const auto& s) { return s->sim().finished(); });
-  if (finished) paused_ = true;
+  if (finished) {
+    paused_ = true;
+    notice_ = "the scene ended at tick " + std::to_string(tick()) + " (Play runs it again)";
+  }
 }
 
 void Debugger::select(std::optional<std::size_t> body) {
@@ -334,10 +351,19 @@ void Debugger::run(Command c) {
     return std::size_t{0};
   };
   switch (c) {
-    case Command::pause:
+    case Command::pause: {
+      notice_.clear();
+      const bool ended = std::all_of(sessions_.begin(), sessions_.end(),
+                                     [](const auto& s) { return s->sim().finished(); });
+      // Play on a scene that has ended plays it again, and says so, rather than pausing at once.
+      if (paused_ && ended) {
+        notice_ = "the scene had ended at tick " + std::to_string(tick()) + ": playing again from 0";
+        goTo(0);
+      }
       paused_ = !paused_;
       clock_ = 0.0;
       break;
+    }
     case Command::step:
       stepOnce();
       break;

@@ -61,6 +61,8 @@ class Debugger {
   [[nodiscard]] std::uint64_t currentTick() const { return tick(); }
   [[nodiscard]] bool paused() const { return paused_; }
   [[nodiscard]] const std::string& message() const { return message_; }
+  [[nodiscard]] const std::string& notice() const { return notice_; }
+  [[nodiscard]] bool helpOpen() const { return showHelp_; }
 
   /// Paused with nothing computing in the background: the window may wait for input.
   [[nodiscard]] bool idle() const {
@@ -119,6 +121,8 @@ class Debugger {
   bool pinned_ = false;
   std::string pickerFilter_;
   std::string message_;  // the last error, shown in the timeline bar
+  std::string notice_;   // news that is not an error ("the scene had ended"), until the next
+  bool waited_ = false;  // the last frame waited for input (its time is not a frame's cost)
 
   Divergence divergence_;
   SubstepSweep sweep_;

@@ -47,8 +47,11 @@ bool menuItem(const char* label, Command c, bool selected = false, bool enabled 
 // [SECTION] the frame ------------------------------------------------------------------------
 
 void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
-  // Smoothed over ~10 frames, so the readout is steady enough to read.
-  frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
+  // Smoothed over ~10 frames, so the readout is steady enough to read. A frame that waited for
+  // input (idle, paused) measures the wait, not the work: left out.
+  if (!waited_)
+    frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
+  waited_ = idle();
   handleKeys(keys);
   advance(seconds);
   // Look ahead for where the movers part, a few milliseconds a frame; screenshots run it to
@@ -75,7 +78,10 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   drawMain(origin, size);
   // After the world and its panels, so a panel that runs long never hides the timeline.
   drawTimeline(display, bottom);
-  if (showHelp_) drawHelp(&showHelp_);
+  if (showHelp_) {
+    const float side = std::clamp(display.x * 0.35f, 340.0f, 480.0f);
+    drawHelp(&showHelp_, {display.x - side, top}, {side, size.y});
+  }
   if (showSweep_) drawSweep();
   drawPicker();
 }
@@ -94,6 +100,13 @@ void Debugger::handleKeys(std::span<const KeyPress> keys) {
       run(Command::frameAll);
     } else if (k.key == GLFW_KEY_F1) {
       run(Command::help);
+    } else if (k.key == GLFW_KEY_ESCAPE) {
+      // The topmost window closes (the scene picker closes itself).
+      if (showHelp_) {
+        showHelp_ = false;
+      } else if (showSweep_) {
+        showSweep_ = false;
+      }
     }
   }
   if (io.KeyCtrl) return;
@@ -248,7 +261,11 @@ float Debugger::drawMenuBar() {
   // screenshot (it reads the clock).
   if (!pinned_) {
     char text[48];
-    std::snprintf(text, sizeof text, "frame %.1f ms", frameMs_);
+    if (idle()) {
+      std::snprintf(text, sizeof text, "idle (paused)");
+    } else {
+      std::snprintf(text, sizeof text, "frame %.1f ms", frameMs_);
+    }
     const float w = ImGui::CalcTextSize(text).x + 2.0f * ImGui::GetStyle().ItemSpacing.x;
     ImGui::SameLine(ImGui::GetWindowWidth() - w);
     ImGui::TextColored(colour(pal::kDim), "%s", text);
@@ -281,11 +298,22 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   button("Step", Command::step);
   button("Forward", Command::stepForward);
   button("Restart", Command::restart);
-  ImGui::SetNextItemWidth(110.0f);
-  float speed = static_cast<float>(speed_);
-  if (ImGui::SliderFloat("speed", &speed, 0.25f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
-    speed_ = static_cast<double>(speed);
+  // The playback rate (not the bodies' --speed): a short list, labelled before the widget.
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextColored(colour(pal::kDim), "playback");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("0.25x").x + ImGui::GetFrameHeight() * 1.6f);
+  char rate[16];
+  std::snprintf(rate, sizeof rate, "%gx", speed_);
+  if (ImGui::BeginCombo("##playback", rate)) {
+    for (const double s : kSpeeds) {
+      std::snprintf(rate, sizeof rate, "%gx", s);
+      if (ImGui::Selectable(rate, speed_ == s)) speed_ = s;
+    }
+    ImGui::EndCombo();
   }
+  ImGui::SameLine();
+  ImGui::TextColored(colour(pal::kDim), "|");
   ImGui::SameLine();
   const std::uint64_t last = std::max({furthest_, divergence_.known(), tick(), std::uint64_t{1}});
   ImGui::Text("tick %" PRIu64 " of %" PRIu64 "%s", tick(), last, divergence_.done() ? "" : "+");
@@ -297,6 +325,9 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   ImGui::SameLine();
   if (!message_.empty()) {
     ImGui::TextColored(colour(pal::kBad), "%s", message_.c_str());
+    ImGui::SameLine();
+  } else if (!notice_.empty()) {
+    ImGui::TextColored(colour(pal::kRender), "|  %s", notice_.c_str());
     ImGui::SameLine();
   } else {
     if (marks.failure) {

@@ -240,5 +240,41 @@ TEST_F(DebuggerDriver, NoTextIsCutAtAPanelsEdge) {
   }
 }
 
+// -- 8. small frictions ------------------------------------------------------------------------
+TEST_F(DebuggerDriver, EscClosesTheTopmostWindowHelpIncluded) {
+  open({"--scene", "bullets-wall", "--sweep"});
+  dbg().openHelp();
+  frame();
+  ASSERT_TRUE(dbg().helpOpen());
+  frame({-FLT_MAX, -FLT_MAX}, false, {KeyPress{GLFW_KEY_ESCAPE, 0}});
+  EXPECT_FALSE(dbg().helpOpen());
+}
+
+TEST_F(DebuggerDriver, PlayOnAnEndedScenePlaysItAgainAndSaysSo) {
+  open({"--scene", "bullets-wall", "--mover", "continuous", "--tick", "1"});
+  dbg().command(Command::pause);  // play
+  for (int i = 0; i < 2000 && !dbg().paused(); ++i) frame();
+  ASSERT_TRUE(dbg().paused());
+  const std::uint64_t end = dbg().currentTick();
+  EXPECT_NE(dbg().notice().find("ended at tick " + std::to_string(end)), std::string::npos);
+  dbg().command(Command::pause);
+  EXPECT_FALSE(dbg().paused());
+  EXPECT_EQ(dbg().currentTick(), 0u);
+  EXPECT_NE(dbg().notice().find("playing again"), std::string::npos) << dbg().notice();
+}
+
+TEST_F(DebuggerDriver, TunedParametersAreSavedWithTheSettings) {
+  open({"--scene", "bullets-wall", "--mover", "substep-discrete", "--tick", "1"});
+  ASSERT_TRUE(dbg().tune("substep", 4.0));
+  Settings saved;
+  dbg().store(saved);
+  std::vector<std::string> args = {"tv-debugger"};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  const Debugger again(parseViewerOptions(1, argv.data()), &saved);
+  EXPECT_EQ(again.panels()[0].draft.get("substep"), 4.0);
+  EXPECT_EQ(again.movers()[0].name(), "substep-discrete");
+}
+
 }  // namespace
 }  // namespace tv::viewer

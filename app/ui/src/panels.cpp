@@ -114,13 +114,20 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
   }
   if (!st.error.empty()) ImGui::TextColored(colour(pal::kBad), "%s", st.error.c_str());
 
+  // The same names and keys as the timeline's buttons; a narrow column wraps them.
+  const auto sameLineIfFits = [](const char* next) {
+    ImGui::SameLine();
+    const float w = ImGui::CalcTextSize(next).x + ImGui::GetStyle().FramePadding.x * 2.0f;
+    if (ImGui::GetContentRegionAvail().x < w) ImGui::NewLine();
+  };
   a.restart |= ImGui::Button("Restart (R)");
-  ImGui::SameLine();
+  sameLineIfFits("Back (,)");
   a.stepBack = ImGui::Button("Back (,)");
-  ImGui::SameLine();
-  a.step = ImGui::Button("Step (.)");
-  ImGui::SameLine();
-  a.togglePause = ImGui::Button(st.paused ? "Play (Space)" : "Pause (Space)");
+  sameLineIfFits("Forward (.)");
+  a.step = ImGui::Button("Forward (.)");
+  const char* play = st.paused ? "Play (Space)" : "Pause (Space)";
+  sameLineIfFits(play);
+  a.togglePause = ImGui::Button(play);
 
   if (ImGui::CollapsingHeader("Overlays") && ImGui::BeginTable("overlays", 3)) {
     for (const OverlayToggle& t : overlayToggles()) {
@@ -145,8 +152,14 @@ void inspectorContents(const Session& session) {
   ImGui::Text("velocity (%.1f, %.1f) px/s", b.velocity.x, b.velocity.y);
   const auto moves = session.moves();
   if (moves.empty()) {
-    ImGui::TextColored(colour(pal::kDim), "no move traced yet");
+    // Say why: a body that has stopped makes no move, so there is nothing to trace.
+    ImGui::TextColored(colour(pal::kDim), "%s",
+                       b.active ? "no move traced yet" : "no move traced: the body has stopped");
     return;
+  }
+  if (!b.active && moves.back().tick < s.ticks()) {
+    ImGui::TextColored(colour(pal::kDim), "stopped: its last move was at tick %" PRIu64,
+                       moves.back().tick);
   }
   // Newest first: the move on screen is the one to read.
   for (std::size_t k = moves.size(); k-- > 0;) {
