@@ -2,6 +2,7 @@
 #include "debugger.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "tv/app/work_limit.hpp"
@@ -198,7 +199,11 @@ void Debugger::build(const sim::SceneDef& scene, const sim::Params& params,
   divergence_.reset(scene, params, movers_);
   clock_ = 0.0;
   furthest_ = landOn;
+  // How long a re-run to this tick takes decides whether sliders follow live.
+  const auto t0 = std::chrono::steady_clock::now();
   goTo(landOn);
+  const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - t0;
+  states_[0].lastRerunMs = spent.count();
 }
 
 void Debugger::loadScene(const sim::SceneDef& scene) {

@@ -79,7 +79,9 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   // After the world and its panels, so a panel that runs long never hides the timeline.
   drawTimeline(display, bottom);
   if (showHelp_) {
-    const float side = std::clamp(display.x * 0.35f, 340.0f, 480.0f);
+    // The width of the column of controls (see drawCompareSideBySide and ui::debuggerLayout).
+    const float side = compare() && !overlay_ ? std::clamp(display.x * 0.30f, 340.0f, 440.0f)
+                                              : std::clamp(display.x * 0.35f, 340.0f, 480.0f);
     drawHelp(&showHelp_, {display.x - side, top}, {side, size.y});
   }
   if (showSweep_) drawSweep();
@@ -390,7 +392,7 @@ void Debugger::drawCompareSideBySide(ImVec2 origin, ImVec2 size) {
   char title[256];
   std::snprintf(title, sizeof title,
                 "%s   tick %" PRIu64
-                "   %s %.2gx   |   velocity %g px/s, tile %g px, dt %.2f ms   |   "
+                "   %s %.2gx   |   speed %g px/s, tile %g px, dt %.2f ms   |   "
                 "traced: %s",
                 scene_->name.c_str(), tick(), paused_ ? "paused" : "running", speed_,
                 params_.get(sim::param::speed), params_.get(sim::param::tile),

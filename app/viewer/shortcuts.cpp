@@ -73,7 +73,7 @@ void drawHelp(bool* open, ImVec2 pos, ImVec2 size) {
       ImGui::TableNextColumn();
       ImGui::TextColored(key, "%s", s.keys);
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(s.what);
+      ImGui::TextWrapped("%s", s.what);
     }
     for (const MouseHelp& m : kMouse) {
       ImGui::TableNextColumn();

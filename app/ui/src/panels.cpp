@@ -2,6 +2,7 @@
 #include "tv/ui/panels.hpp"
 
 #include <cfloat>
+#include <cmath>
 #include <cinttypes>
 #include <cstdio>
 #include <string>
@@ -19,14 +20,44 @@ ImVec4 colour(ImU32 c) {
   return ImGui::ColorConvertU32ToFloat4(c);
 }
 
-// The common parameters under the names the issue and the README use.
-const char* friendlyName(const std::string& name) {
-  if (name == sim::param::speed) return "velocity";
-  if (name == sim::param::tile) return "tile size";
-  if (name == sim::param::cell) return "cell size";
-  if (name == sim::param::substep) return "max substep length";
-  if (name == sim::param::size) return "body size";
-  return name.c_str();
+// A slider's range and scale: what a person tunes, not the whole range a value may take (a
+// value typed with Ctrl+click may go beyond it, as far as the parameter allows).
+struct SliderRange {
+  double lo, hi;
+  bool log;
+};
+
+SliderRange sliderRange(const sim::ParamSpec& spec) {
+  const std::string& n = spec.name;
+  if (n == sim::param::speed) return {1.0, 1e6, true};
+  if (n == sim::param::dt) return {1e-3, 0.1, true};
+  if (n == sim::param::size || n == sim::param::tile || n == sim::param::cell)
+    return {0.5, 512.0, true};
+  if (n == sim::param::substep) return {0.0, 64.0, false};
+  if (n == sim::param::offset) return {0.0, 1e9, true};
+  const double lo = std::isfinite(spec.min) ? spec.min : -1e6;
+  const double hi = std::isfinite(spec.max) ? spec.max : 1e6;
+  return {lo, hi, lo > 0.0 && hi / lo >= 100.0};
+}
+
+// Dragged values snap to round numbers: 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten
+// (Shift: three significant digits, for fine steps).
+double snapped(double v, bool fine, bool integer) {
+  if (v == 0.0 || !std::isfinite(v)) return v;
+  const double mag = std::pow(10.0, std::floor(std::log10(std::abs(v))));
+  double out = v;
+  if (fine) {
+    out = std::round(v / mag * 100.0) * mag / 100.0;
+  } else {
+    constexpr double kSteps[] = {1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10};
+    const double m = std::abs(v) / mag;
+    double best = kSteps[0];
+    for (const double step : kSteps) {
+      if (std::abs(step - m) < std::abs(best - m)) best = step;
+    }
+    out = std::copysign(best * mag, v);
+  }
+  return integer ? std::round(out) : out;
 }
 
 void rowLabel(const char* text) {
@@ -88,18 +119,30 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
       ImGui::EndCombo();
     }
     for (const sim::ParamSpec& spec : st.draft.specs()) {
-      const std::string label =
-          std::string(friendlyName(spec.name)) + (spec.unit.empty() ? "" : " (" + spec.unit + ")");
+      // Labelled with the flag's name, as in every tool and CSV column.
+      const std::string label = spec.name + (spec.unit.empty() ? "" : " (" + spec.unit + ")");
       rowLabel(label.c_str());
       double v = st.draft.get(spec.name);
-      const double speed = spec.integer ? 1.0 : (v != 0.0 ? std::abs(v) * 0.01 : 0.01);
       const std::string id = "##" + spec.name;
-      if (ImGui::DragScalar(id.c_str(), ImGuiDataType_Double, &v, static_cast<float>(speed),
-                            &spec.min, &spec.max, spec.integer ? "%.0f" : "%.6g")) {
+      const SliderRange r = sliderRange(spec);
+      const bool changed = ImGui::SliderScalar(
+          id.c_str(), ImGuiDataType_Double, &v, &r.lo, &r.hi, spec.integer ? "%.0f" : "%.6g",
+          r.log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+      if (changed) {
+        // Dragging snaps; a value typed with Ctrl+click is taken exactly.
+        const bool dragging = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+        if (dragging) v = snapped(v, ImGui::GetIO().KeyShift, spec.integer);
         setDraft(st, spec.name, v);
+        // Live while the slider moves when a re-run to this tick is cheap; else on release.
+        if (dragging && st.lastRerunMs < kLiveRerunMs) a.restart = true;
       }
       if (ImGui::IsItemDeactivatedAfterEdit()) a.restart = true;
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.description.c_str());
+      if (ImGui::IsItemActive() && st.lastRerunMs >= kLiveRerunMs) {
+        ImGui::SetTooltip("re-runs on release (the last re-run took %.0f ms)", st.lastRerunMs);
+      } else if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("--%s: %s\ndrag: round values (Shift: fine); Ctrl+click: type exactly",
+                          spec.name.c_str(), spec.description.c_str());
+      }
     }
     rowLabel("render rate (Hz)");
     const double lo = 0.0, hi = 1000.0;

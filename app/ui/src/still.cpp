@@ -19,7 +19,7 @@ std::string compareTitle(const Session& s, const PictureOptions& o, std::uint64_
   const sim::Params& p = s.sim().params();
   char text[512];
   std::snprintf(text, sizeof text,
-                "%s at tick %llu   |   velocity %g px/s, body %g px, tile %g px, dt %.2f ms, "
+                "%s at tick %llu   |   speed %g px/s, size %g px, tile %g px, dt %.2f ms, "
                 "max substep %s   |   traced: %s",
                 o.scene.c_str(), static_cast<unsigned long long>(tick), p.get(sim::param::speed),
                 p.get(sim::param::size), p.get(sim::param::tile), p.get(sim::param::dt) * 1000.0,

@@ -36,7 +36,13 @@ struct DebuggerState {
   std::string draftScene;
   std::string draftMover;
   std::string error;  ///< the last rejected edit, shown in red until the next one
+  /// How long the last re-run to the current tick took (wall ms, set by the viewer): sliders
+  /// re-run live while it is under kLiveRerunMs, else on release.
+  double lastRerunMs = 1e9;
 };
+
+/// Re-runs quicker than this follow a slider live.
+inline constexpr double kLiveRerunMs = 30.0;
 
 /// What the controls asked for this frame.
 struct Actions {
