@@ -333,10 +333,17 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
     ImGui::SameLine();
   } else {
     if (marks.failure) {
-      char text[160];
-      std::snprintf(text, sizeof text, "first failure: tick %" PRIu64 ", %s", *marks.failure,
+      char text[200];
+      std::snprintf(text, sizeof text, "|  first failure: tick %" PRIu64 ", %s", *marks.failure,
                     marks.failureText.c_str());
-      ImGui::TextColored(colour(pal::kBad), "|  %s", text);
+      // A narrow window gets the short form (whole, never cut at the edge) and the rest on hover.
+      const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("go").x * 2.0f -
+                         (marks.difference ? ImGui::CalcTextSize("|  movers differ from tick 0000  go").x
+                                           : 0.0f);
+      if (ImGui::CalcTextSize(text).x > room)
+        std::snprintf(text, sizeof text, "|  failure: tick %" PRIu64, *marks.failure);
+      ImGui::TextColored(colour(pal::kBad), "%s", text);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", marks.failureText.c_str());
       ImGui::SameLine();
       if (ImGui::SmallButton("go##failure")) goTo(*marks.failure);
       ImGui::SameLine();

@@ -16,6 +16,7 @@
 #include "debugger.hpp"
 #include "imgui.h"
 #include "options.hpp"
+#include "tv/ui/palette.hpp"
 
 namespace tv::viewer {
 namespace {
@@ -27,6 +28,7 @@ class DebuggerDriver : public ::testing::Test {
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     io.DeltaTime = 1.0f / 60.0f;
+    ui::applyStyle(ImGui::GetStyle());  // the debugger's compact look, as the window has it
     unsigned char* pixels = nullptr;
     int w = 0, h = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
