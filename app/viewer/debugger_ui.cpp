@@ -325,35 +325,44 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   marks.failureText = divergence_.failureText();
   if (compare()) marks.difference = divergence_.firstDifference();
   ImGui::SameLine();
+  // Each note goes on the row whole, in its short form when the long one does not fit; the
+  // full text is on hover.
+  const float go = ImGui::CalcTextSize("go").x + ImGui::GetStyle().FramePadding.x * 2.0f +
+                   ImGui::GetStyle().ItemSpacing.x * 2.0f;
+  const auto note = [&](ImU32 c, const char* full, const char* brief, const char* hover) {
+    const float room = ImGui::GetContentRegionAvail().x - go;
+    const char* text = ImGui::CalcTextSize(full).x <= room ? full : brief;
+    if (ImGui::CalcTextSize(text).x > room) return false;
+    ImGui::TextColored(colour(c), "%s", text);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hover);
+    ImGui::SameLine();
+    return true;
+  };
   if (!message_.empty()) {
-    ImGui::TextColored(colour(pal::kBad), "%s", message_.c_str());
-    ImGui::SameLine();
+    const std::string full = "|  " + message_;
+    (void)note(pal::kBad, full.c_str(), "|  refused: hover, or see the panel", message_.c_str());
   } else if (!notice_.empty()) {
-    ImGui::TextColored(colour(pal::kRender), "|  %s", notice_.c_str());
-    ImGui::SameLine();
+    const std::string full = "|  " + notice_;
+    (void)note(pal::kRender, full.c_str(), "|  ended", notice_.c_str());
   } else {
     if (marks.failure) {
-      char text[200];
-      std::snprintf(text, sizeof text, "|  first failure: tick %" PRIu64 ", %s", *marks.failure,
+      char full[200], brief[64];
+      std::snprintf(full, sizeof full, "|  first failure: tick %" PRIu64 ", %s", *marks.failure,
                     marks.failureText.c_str());
-      // A narrow window gets the short form (whole, never cut at the edge) and the rest on hover.
-      const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("go").x * 2.0f -
-                         (marks.difference ? ImGui::CalcTextSize("|  movers differ from tick 0000  go").x
-                                           : 0.0f);
-      if (ImGui::CalcTextSize(text).x > room)
-        std::snprintf(text, sizeof text, "|  failure: tick %" PRIu64, *marks.failure);
-      ImGui::TextColored(colour(pal::kBad), "%s", text);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", marks.failureText.c_str());
-      ImGui::SameLine();
-      if (ImGui::SmallButton("go##failure")) goTo(*marks.failure);
-      ImGui::SameLine();
+      std::snprintf(brief, sizeof brief, "|  failure: tick %" PRIu64, *marks.failure);
+      if (note(pal::kBad, full, brief, marks.failureText.c_str())) {
+        if (ImGui::SmallButton("go##failure")) goTo(*marks.failure);
+        ImGui::SameLine();
+      }
     }
     if (marks.difference) {
-      ImGui::TextColored(colour(pal::kRender), "|  movers differ from tick %" PRIu64,
-                         *marks.difference);
-      ImGui::SameLine();
-      if (ImGui::SmallButton("go##difference")) goTo(*marks.difference);
-      ImGui::SameLine();
+      char full[96], brief[64];
+      std::snprintf(full, sizeof full, "|  movers differ from tick %" PRIu64, *marks.difference);
+      std::snprintf(brief, sizeof brief, "|  differ: %" PRIu64, *marks.difference);
+      if (note(pal::kRender, full, brief, "the first tick whose state hashes differ")) {
+        if (ImGui::SmallButton("go##difference")) goTo(*marks.difference);
+        ImGui::SameLine();
+      }
     }
     if (!marks.failure && divergence_.done()) {
       ImGui::TextColored(colour(pal::kGood), "|  no failure in %" PRIu64 " ticks", marks.known);

@@ -177,12 +177,14 @@ TEST_F(DebuggerDriver, AMoverNamedTwiceIsRefused) {
 // clip rect across; the top and bottom are where a window scrolls, which is not a defect.
 int cutGlyphs(std::string* where) {
   const ImDrawData* dd = ImGui::GetDrawData();
-  // A glyph quad's first vertex carries the glyph's (U0, V0); lines and shapes use other UVs.
-  std::vector<ImVec2> glyphUv;
-  for (const ImFontGlyph& g : ImGui::GetIO().Fonts->Fonts[0]->Glyphs) glyphUv.push_back({g.U0, g.V0});
-  const auto isGlyph = [&](ImVec2 uv) {
-    for (const ImVec2& g : glyphUv) {
-      if (g.x == uv.x && g.y == uv.y) return true;
+  // A glyph is a quad drawn as two triangles; its first triangle runs from the vertex with the
+  // glyph's (U0, V0) to the one with its (U1, V1). Lines and shapes use other UVs. Triangles are
+  // walked one by one: other primitives in the same command need not come in sixes.
+  const ImVector<ImFontGlyph>& glyphs = ImGui::GetIO().Fonts->Fonts[0]->Glyphs;
+  const auto isGlyph = [&](ImVec2 uv0, ImVec2 uv2) {
+    for (const ImFontGlyph& g : glyphs) {
+      if (g.U0 == uv0.x && g.V0 == uv0.y && g.U1 == uv2.x && g.V1 == uv2.y && g.X1 > g.X0)
+        return true;
     }
     return false;
   };
@@ -192,12 +194,11 @@ int cutGlyphs(std::string* where) {
     for (const ImDrawCmd& cmd : dl->CmdBuffer) {
       if (cmd.UserCallback) continue;
       const ImVec4 clip = cmd.ClipRect;
-      // Glyphs are quads (4 vertices, 6 indices) whose UVs are not the white pixel.
-      for (unsigned i = 0; i + 6 <= cmd.ElemCount; i += 6) {
+      for (unsigned i = 0; i + 3 <= cmd.ElemCount; i += 3) {
         const ImDrawIdx* idx = dl->IdxBuffer.Data + cmd.IdxOffset + i;
         const ImDrawVert& a = dl->VtxBuffer[static_cast<int>(cmd.VtxOffset + idx[0])];
         const ImDrawVert& c = dl->VtxBuffer[static_cast<int>(cmd.VtxOffset + idx[2])];
-        if (!isGlyph(a.uv)) continue;
+        if (!isGlyph(a.uv, c.uv)) continue;
         const float x0 = std::min(a.pos.x, c.pos.x), x1 = std::max(a.pos.x, c.pos.x);
         const float y0 = std::min(a.pos.y, c.pos.y), y1 = std::max(a.pos.y, c.pos.y);
         const bool inside = x0 >= clip.x - 0.5f && x1 <= clip.z + 0.5f;
@@ -240,6 +241,13 @@ TEST_F(DebuggerDriver, NoTextIsCutAtAPanelsEdge) {
     std::string where;
     EXPECT_EQ(cutGlyphs(&where), 0) << c.w << "x" << c.h << " " << c.args[1] << ": " << where;
   }
+  // A refusal explains itself in the panel and the bar, whole.
+  resize(1024, 640);
+  open(cases[1].args);
+  EXPECT_FALSE(dbg().tune("speed", 1e9));
+  frames(3);
+  std::string where;
+  EXPECT_EQ(cutGlyphs(&where), 0) << "refused speed: " << where;
 }
 
 // -- 8. small frictions ------------------------------------------------------------------------

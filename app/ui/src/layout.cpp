@@ -187,7 +187,7 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
   float top = 0.0f;
   if (ImGui::Begin("Title", nullptr, kOverlay)) {
-    ImGui::TextUnformatted(title.c_str());
+    ImGui::TextWrapped("%s", title.c_str());  // a narrow window wraps it, never cuts it
     top = ImGui::GetWindowHeight();
   }
   ImGui::End();

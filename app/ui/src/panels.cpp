@@ -155,7 +155,11 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
     }
     ImGui::EndTable();
   }
-  if (!st.error.empty()) ImGui::TextColored(colour(pal::kBad), "%s", st.error.c_str());
+  if (!st.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kBad));
+    ImGui::TextWrapped("%s", st.error.c_str());  // a refusal explains itself: never cut
+    ImGui::PopStyleColor();
+  }
 
   // The same names and keys as the timeline's buttons; a narrow column wraps them.
   const auto sameLineIfFits = [](const char* next) {
@@ -190,9 +194,9 @@ void inspectorContents(const Session& session) {
   }
   const std::size_t i = *session.selected();
   const sim::Body& b = s.bodies()[i];
-  ImGui::Text("body %zu  %s", i, b.active ? "moving" : "stopped");
-  ImGui::Text("at (%.3f, %.3f)  size %g x %g", b.rect.x, b.rect.y, b.rect.w, b.rect.h);
-  ImGui::Text("velocity (%.1f, %.1f) px/s", b.velocity.x, b.velocity.y);
+  ImGui::TextWrapped("body %zu  %s", i, b.active ? "moving" : "stopped");
+  ImGui::TextWrapped("at (%.3f, %.3f)  size %g x %g", b.rect.x, b.rect.y, b.rect.w, b.rect.h);
+  ImGui::TextWrapped("velocity (%.1f, %.1f) px/s", b.velocity.x, b.velocity.y);
   const auto moves = session.moves();
   if (moves.empty()) {
     // Say why: a body that has stopped makes no move, so there is nothing to trace.
@@ -213,10 +217,10 @@ void inspectorContents(const Session& session) {
     const bool shown = ImGui::TreeNodeEx("move", open, "tick %" PRIu64 " move by %s: %zu hits",
                                          tm.tick, std::string(m.mover).c_str(), m.hits.size());
     if (shown) {
-      ImGui::Text("%zu cells, %zu candidates, %zu legs, %zu substeps", m.cells.size(),
+      ImGui::TextWrapped("%zu cells, %zu candidates, %zu legs, %zu substeps", m.cells.size(),
                   m.candidates.size(), m.legs.size(), m.substeps.size());
-      ImGui::Text("(%.3f, %.3f) -> goal (%.3f, %.3f)", m.start.x, m.start.y, m.goal.x, m.goal.y);
-      ImGui::Text("ended at (%.3f, %.3f)", m.final.x, m.final.y);
+      ImGui::TextWrapped("(%.3f, %.3f) -> goal (%.3f, %.3f)", m.start.x, m.start.y, m.goal.x, m.goal.y);
+      ImGui::TextWrapped("ended at (%.3f, %.3f)", m.final.x, m.final.y);
       // Two lines per hit, the fields of the Collision record as core filled them.
       for (std::size_t h = 0; h < m.hits.size(); ++h) {
         const Collision& c = m.hits[h];
@@ -225,11 +229,13 @@ void inspectorContents(const Session& session) {
         std::snprintf(ti, sizeof ti, c.overlaps ? "overlapping" : "ti %.4f", c.ti);
         ImGui::TextColored(colour(pal::kHit), "hit %zu", h + 1);
         ImGui::SameLine();
-        ImGui::Text("%s  %s  normal %+.0f,%+.0f  %s%s", session.describe(c.other).c_str(), ti,
+        ImGui::TextWrapped("%s  %s  normal %+.0f,%+.0f  %s%s", session.describe(c.other).c_str(), ti,
                     c.normal.x + 0.0, c.normal.y + 0.0, response.c_str(),
                     c.corner ? " (corner)" : "");
-        ImGui::TextColored(colour(pal::kDim), "   touch (%.3f, %.3f)  %s (%.3f, %.3f)", c.touch.x,
-                           c.touch.y, "target", c.target.x, c.target.y);
+        ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kDim));
+        ImGui::TextWrapped("   touch (%.3f, %.3f)  %s (%.3f, %.3f)", c.touch.x, c.touch.y,
+                           "target", c.target.x, c.target.y);
+        ImGui::PopStyleColor();
       }
       ImGui::TreePop();
     }
