@@ -70,6 +70,38 @@ void textFitting(std::initializer_list<const char*> variants, ImU32 colour) {
   ImGui::PopStyleColor();
 }
 
+// A scale bar at the bottom right of the world view: a round length (1, 2 or 5 x 10^k px) that
+// is 60..150 screen pixels long, so distances in the picture can be read without the HUD.
+void drawScaleBar(ImDrawList& dl, const Camera& cam, float coveredBottom) {
+  const double scale = cam.scale();
+  if (!(scale > 0.0) || !std::isfinite(scale)) return;
+  double length = std::pow(10.0, std::floor(std::log10(90.0 / scale)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (length * m * scale >= 60.0) {
+      length *= m;
+      break;
+    }
+  }
+  const float px = static_cast<float>(length * scale);
+  const ImVec2 hi = cam.screenMax();
+  const float y = hi.y - coveredBottom - 12.0f;
+  const float x1 = hi.x - 14.0f, x0 = x1 - px;
+  char text[32];
+  std::snprintf(text, sizeof text, "%g px", length);
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  dl.AddRectFilled({x0 - 6.0f, y - size.y - 6.0f}, {x1 + 6.0f, y + 6.0f}, IM_COL32(0, 0, 0, 150));
+  dl.AddLine({x0, y}, {x1, y}, pal::kLabel, 2.0f);
+  dl.AddLine({x0, y - 4.0f}, {x0, y + 4.0f}, pal::kLabel, 2.0f);
+  dl.AddLine({x1, y - 4.0f}, {x1, y + 4.0f}, pal::kLabel, 2.0f);
+  dl.AddText({(x0 + x1 - size.x) * 0.5f, y - size.y - 3.0f}, pal::kLabel, text);
+}
+
+std::uint64_t failuresOf(const sim::Counters& c) {
+  std::uint64_t n = c.tunnelled;
+  for (const auto& [label, field] : kFailures) n += c.*field;
+  return n;
+}
+
 }  // namespace
 
 std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerState& st,
@@ -105,7 +137,11 @@ std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerS
     }
   }
   const WorldPicture pic = session.picture();
-  drawWorld(*ImGui::GetWindowDrawList(), st.camera, pic, st.overlays);
+  ImDrawList& dl = *ImGui::GetWindowDrawList();
+  drawWorld(dl, st.camera, pic, st.overlays);
+  dl.PushClipRect(st.camera.screenMin(), st.camera.screenMax(), true);
+  drawScaleBar(dl, st.camera, std::min(st.coveredBottom, size.y * 0.4f));
+  dl.PopClipRect();
   return clicked;
 }
 
@@ -186,8 +222,35 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   ImGui::SetNextWindowPos({x0, y0}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
   float top = 0.0f;
+  // Before / after: the first panel failed where the last did not.
+  const bool beforeAfter = n > 1 && failuresOf(sessions[0]->sim().counters()) > 0 &&
+                           failuresOf(sessions[n - 1]->sim().counters()) == 0;
   if (ImGui::Begin("Title", nullptr, kOverlay)) {
     ImGui::TextWrapped("%s", title.c_str());  // a narrow window wraps it, never cuts it
+    // The verdict, one coloured clause per mover: what a reader should take away.
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "verdict:");
+    for (std::size_t k = 0; k < n; ++k) {
+      const sim::Simulation& sim = sessions[k]->sim();
+      const sim::Counters& c = sim.counters();
+      std::string clause = sim.moverSpec().name() + ": ";
+      char num[96];
+      std::snprintf(num, sizeof num, "%" PRIu64 " of %zu tunnelled", c.tunnelled,
+                    sim.bodies().size());
+      clause += num;
+      for (const auto& [label, field] : kFailures) {
+        const bool used =
+            std::any_of(sessions.begin(), sessions.begin() + static_cast<std::ptrdiff_t>(n),
+                        [&](const Session* o) { return o->sim().counters().*field != 0; });
+        if (!used) continue;
+        std::snprintf(num, sizeof num, ", %s %" PRIu64, label, c.*field);
+        clause += num;
+      }
+      clause += k + 1 < n ? ";" : "";
+      sameLineIfFits(clause.c_str());
+      ImGui::TextColored(
+          ImGui::ColorConvertU32ToFloat4(failuresOf(c) > 0 ? pal::kBad : pal::kGood), "%s",
+          clause.c_str());
+    }
     top = ImGui::GetWindowHeight();
   }
   ImGui::End();
@@ -206,7 +269,11 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   for (std::size_t k = 0; k < n; ++k) {
     Session& s = *sessions[k];
     DebuggerState& st = states[k];
-    const std::string name = s.sim().moverSpec().name();
+    std::string name = s.sim().moverSpec().name();
+    if (beforeAfter && k == 0) name = "before: " + name;
+    if (beforeAfter && k + 1 == n) name = "after: " + name;
+    // The id is the panel's place, so a title that changes (before/after) keeps the window.
+    name += "###panel" + std::to_string(k);
     place({x0 + w * static_cast<float>(k), y0 + top}, {w, h});
     if (ImGui::Begin(name.c_str(), nullptr, kFixed | ImGuiWindowFlags_NoScrollbar)) {
       // Lines of numbers under the picture: the verdict, the traced move, the cost; a narrow

@@ -164,6 +164,12 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
                          value + "'"};
       }
       o.frames = static_cast<int>(k);
+    } else if (name == "caption") {
+      if (value.size() > 300) {
+        throw UsageError{"--caption: at most 300 characters (one line), but got " +
+                         std::to_string(value.size())};
+      }
+      o.caption = value;
     } else if (name == "hide" || name == "show") {
       auto& list = name == "hide" ? o.hide : o.show;
       for (std::string& s : splitList(name, value)) list.push_back(std::move(s));

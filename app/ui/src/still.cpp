@@ -166,6 +166,7 @@ void Still::beginImage() {
     syncDraft(states_[k], *sessions_[k]);
   }
   title_ = o_.compare ? compareTitle(*sessions_.front(), o_, sessions_.front()->sim().ticks()) : "";
+  if (o_.compare && !o_.caption.empty()) title_ += "\n" + o_.caption;
 }
 
 void Still::drawFrame(ImVec2 display) {

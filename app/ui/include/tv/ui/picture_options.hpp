@@ -36,6 +36,8 @@ struct PictureOptions {
   double renderHz = 0.0;
   int frames = 4;
   std::vector<std::string> hide, show;
+  /// One line on what the picture shows, drawn under a comparison's title (--caption TEXT).
+  std::string caption;
   std::vector<std::pair<std::string, std::string>> params;  ///< --NAME VALUE, in order
   /// Which flags were on the command line (a program with saved settings lets these win).
   bool sceneGiven = false, moverGiven = false, tickGiven = false, windowGiven = false;
