@@ -269,6 +269,9 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   for (std::size_t k = 0; k < n; ++k) {
     Session& s = *sessions[k];
     DebuggerState& st = states[k];
+    // Nothing covers a comparison's panels (title and legend sit outside them): a margin left
+    // from the one-mover view would shrink every framing.
+    st.coveredTop = st.coveredBottom = 0.0f;
     std::string name = s.sim().moverSpec().name();
     if (beforeAfter && k == 0) name = "before: " + name;
     if (beforeAfter && k + 1 == n) name = "after: " + name;
