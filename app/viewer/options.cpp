@@ -28,7 +28,8 @@ const char* const kUsage =
     "                   of the scene at the tick, write it to F and exit; tv-render given the\n"
     "                   same flags writes the same pixels\n"
     "  --app-screenshot F  the same, of the whole debugger window\n"
-    "Settings (scene, movers, layout, overlays, window size, speed) live in\n"
+    "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
+    "values) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
     "Exit status: 0 done, 1 failed (no display, GL), 2 bad command line.\n";
 
