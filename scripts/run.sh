@@ -29,14 +29,17 @@ out=out/comparisons
 rm -rf "$out"
 mkdir -p "$out"
 while IFS='|' read -r name args; do
-  # shellcheck disable=SC2086  # the arguments are words by design
-  "$build/app/headless/tv-render" $args --out "$out/$name.png" >/dev/null
+  # Words before --caption are flags; everything after it is the caption, one argument.
+  caption="${args#* --caption }"
+  flags="${args%% --caption *}"
+  # shellcheck disable=SC2086  # the flags are words by design
+  "$build/app/headless/tv-render" $flags --caption "$caption" --out "$out/$name.png" >/dev/null
   echo "  $out/$name.png"
 done <<'LIST' > "$out/index.txt"
-tunnel-1920|--scene bullets-wall --compare discrete,substep-discrete,continuous --tick 2 --body 2 --view follow
-tunnel-diagonal|--scene bullets-wall --angle 45 --cell 16 --compare sweep,substep-sweep,continuous --tick 2 --body 2 --view follow
-bounce-gap|--scene bounce-gap --compare discrete,substep-discrete,continuous --tick 1 --body 0 --view follow
-seam-snag|--scene seam-walk --speed 250 --compare discrete,continuous --tick 18 --body 0 --view follow
+tunnel-1920|--scene bullets-wall --compare discrete,substep-discrete,continuous --tick 2 --body 2 --view follow --caption Tunnelling at 1920 px/s: 1000 bullets into a one-tile wall. The naive mover teleports past it, the substep patch and the exact sweep stop at its face.
+cells-diagonal|--scene bullets-wall --angle 45 --cell 16 --compare sweep,substep-sweep,continuous --tick 2 --body 2 --view follow --caption Cells visited by one 45 degree move (yellow): sweep tests its whole bounding box, continuous only the cells the rect crosses, substeps revisit cells. None tunnels.
+bounce-gap|--scene bounce-gap --compare discrete,substep-discrete,continuous --tick 1 --body 0 --view follow --caption A ball in a slot narrower than its step. Escapes: the ball ends outside its box (discrete is pushed out of the far wall); continuous bounces wall to wall inside one tick.
+seam-snag|--scene seam-walk --speed 250 --compare discrete,continuous --tick 18 --body 0 --view follow --caption The seam snag at tick 18: the teleported walker lands in the next floor tile and is pushed back sideways (snags 1, red normal); the sweep slides over the seam.
 LIST
 echo "Comparison images (before/after, side by side), in $out/:"
 cat "$out/index.txt"

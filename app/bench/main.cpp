@@ -12,8 +12,10 @@
 #include <string_view>
 #include <system_error>
 
+
 #include "cli.hpp"
 #include "studies.hpp"
+#include "tv/app/vocabulary.hpp"
 #include "tv/error.hpp"
 
 namespace {
@@ -103,6 +105,7 @@ Options parseArgs(int argc, char** argv, const tv::bench::Study*& study) {
         valid += ", --" + f.name;
       }
       if (!spec) {
+        tv::app::refuseRetiredFlag<UsageError>(name);
         throw UsageError{"--" + name + ": unknown flag for '" + o.study + "' (valid: " + valid +
                          ")"};
       }

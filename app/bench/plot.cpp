@@ -103,12 +103,26 @@ class Canvas {
     }
   }
 
+  // The text's characters: UTF-8 up to two bytes (the font has Latin-1, e.g. the µ of µs).
+  [[nodiscard]] static std::vector<ImWchar> chars(const std::string& s) {
+    std::vector<ImWchar> out;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const auto b = static_cast<unsigned char>(s[i]);
+      if (b >= 0xC0 && b < 0xE0 && i + 1 < s.size()) {
+        const auto b2 = static_cast<unsigned char>(s[++i]);
+        out.push_back(static_cast<ImWchar>(((b & 0x1Fu) << 6) | (b2 & 0x3Fu)));
+      } else {
+        out.push_back(static_cast<ImWchar>(b));
+      }
+    }
+    return out;
+  }
+
   [[nodiscard]] double textWidth(const std::string& s, bool big) const {
     const ImFont* f = big ? big_ : small_;
     double w = 0;
-    for (const char ch : s) {
-      if (const ImFontGlyph* g = f->FindGlyph(static_cast<ImWchar>(static_cast<unsigned char>(ch))))
-        w += static_cast<double>(g->AdvanceX);
+    for (const ImWchar ch : chars(s)) {
+      if (const ImFontGlyph* g = f->FindGlyph(ch)) w += static_cast<double>(g->AdvanceX);
     }
     return w;
   }
@@ -120,8 +134,8 @@ class Canvas {
   void text(double x, double y, const std::string& s, Rgb c, bool big, bool vertical = false) {
     const ImFont* f = big ? big_ : small_;
     double pen = 0;
-    for (const char ch : s) {
-      const ImFontGlyph* g = f->FindGlyph(static_cast<ImWchar>(static_cast<unsigned char>(ch)));
+    for (const ImWchar ch : chars(s)) {
+      const ImFontGlyph* g = f->FindGlyph(ch);
       if (!g) continue;
       const int u0 = static_cast<int>(std::lround(g->U0 * static_cast<float>(texW_)));
       const int v0 = static_cast<int>(std::lround(g->V0 * static_cast<float>(texH_)));
@@ -163,7 +177,7 @@ class Canvas {
 
 std::string decadeLabel(int e, bool time) {
   if (time) {
-    static const char* const kUnits[] = {"ns", "us", "ms", "s"};
+    static const char* const kUnits[] = {"ns", "\xC2\xB5s", "ms", "s"};
     const int u = std::clamp(e / 3, 0, 3);
     const double v = std::pow(10.0, e - 3 * u);
     char buf[32];
@@ -253,6 +267,18 @@ void writeScatterPng(const ScatterPlot& plot, const std::filesystem::path& path)
     c.line(left, y, right, y, kGrid, 1.5);
     const std::string l = decadeLabel(e, false);
     c.text(left - 12 - c.textWidth(l, true), y - c.textHeight(true) / 2, l, kInk, true);
+    // Between the decades: a line at every multiple, and a label at 2 and 5 (3 more when the
+    // axis spans at most two decades), so a point's error can be read off the axis.
+    for (int m = 2; m <= 9 && e < ey1; ++m) {
+      const double v = m * std::pow(10.0, e);
+      const double ym = sy(v);
+      c.line(left, ym, right, ym, kMinor, 1);
+      const bool labelled = m == 2 || m == 5 || (ey1 - ey0 <= 2 && (m == 3 || m == 7));
+      if (!labelled) continue;
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", v);
+      c.text(left - 12 - c.textWidth(text, true), ym - c.textHeight(true) / 2, text, kMuted, true);
+    }
   }
   c.fillRect(left, plotBottom + 4, right, bottom, {0.96, 0.97, 0.94});
   c.text(left - 12 - c.textWidth("0", true), sy(0) - c.textHeight(true) / 2, "0", kInk, true);
@@ -271,30 +297,53 @@ void writeScatterPng(const ScatterPlot& plot, const std::filesystem::path& path)
   c.text(28, (top + bottom) / 2 + c.textWidth(plot.yLabel, true) / 2, plot.yLabel, kInk, true,
          true);
 
+  // Where each point is drawn. Exact points (error 0) share the band under the axis: they are
+  // spread over three rows there, so points close in time (sweep, continuous, adaptive) each
+  // keep a disc and a tag of their own.
+  std::vector<double> px(n), py(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    px[i] = sx(plot.points[i].x);
+    py[i] = sy(plot.points[i].y);
+  }
+  {
+    std::vector<std::size_t> zero;
+    for (std::size_t i = 0; i < n; ++i)
+      if (plot.points[i].y <= 0) zero.push_back(i);
+    std::sort(zero.begin(), zero.end(), [&](std::size_t a, std::size_t b) { return px[a] < px[b]; });
+    std::vector<std::vector<double>> rows(3);
+    for (const std::size_t i : zero) {
+      std::size_t r = 0;
+      for (; r < rows.size(); ++r) {
+        if (std::none_of(rows[r].begin(), rows[r].end(),
+                         [&](double x) { return std::abs(x - px[i]) < 60.0; }))
+          break;
+      }
+      if (r == rows.size()) r = 0;
+      rows[r].push_back(px[i]);
+      py[i] = plotBottom + 4 + (zeroBand - 4) * (0.25 + 0.25 * static_cast<double>(r));
+    }
+  }
+
   // The front: a staircase through the front points in time order.
-  std::vector<const PlotPoint*> front;
-  for (const PlotPoint& p : plot.points)
-    if (p.front) front.push_back(&p);
-  std::sort(front.begin(), front.end(),
-            [](const PlotPoint* a, const PlotPoint* b) { return a->x < b->x; });
+  std::vector<std::size_t> front;
+  for (std::size_t i = 0; i < n; ++i)
+    if (plot.points[i].front) front.push_back(i);
+  std::sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) { return px[a] < px[b]; });
   struct Seg {
     double x0, y0, x1, y1;
   };
   std::vector<Seg> frontSegs;
   for (std::size_t i = 0; i + 1 < front.size(); ++i) {
-    const double x0 = sx(front[i]->x), y0 = sy(front[i]->y);
-    const double x1 = sx(front[i + 1]->x), y1 = sy(front[i + 1]->y);
+    const double x0 = px[front[i]], y0 = py[front[i]];
+    const double x1 = px[front[i + 1]], y1 = py[front[i + 1]];
     frontSegs.push_back({x0, y0, x1, y0});
     frontSegs.push_back({x1, y0, x1, y1});
   }
   for (const Seg& sg : frontSegs) c.line(sg.x0, sg.y0, sg.x1, sg.y1, kFront, 3);
 
   // Points.
-  std::vector<double> px(n), py(n);
   for (std::size_t i = 0; i < n; ++i) {
     const PlotPoint& p = plot.points[i];
-    px[i] = sx(p.x);
-    py[i] = sy(p.y);
     if (p.front) c.disc(px[i], py[i], 11, kFront, 3);
     if (p.bad) {
       c.disc(px[i], py[i], 7, kBad, 3);

@@ -171,7 +171,7 @@ int runTunnel(const Options& o) {
      << ". substep pieces are tile/2 = 8 px. The **far-side push-out** rate of discrete is "
         "shown separately below.\n\n";
 
-  std::vector<std::string> head = {"px/s:"};
+  std::vector<std::string> head = {"speed px/s:"};  // the --speed of every tool
   for (const Column& c : kColumns) head.push_back(c.title + ":");
   Progress progress("tunnel", kLayouts.size() * speeds.size() * (kColumns.size() + 1));
   struct Push {
@@ -229,7 +229,7 @@ int runTunnel(const Options& o) {
         "shot into the wall past its middle and pushed it out of the **far** side. The rest "
         "jumped clean over the wall without ever overlapping it.\n\n";
   Table push({"layout",
-              "px/s:", "1/60: tunnelled:", "1/60: far-side push-outs:", "1/60: jumped over:",
+              "speed px/s:", "1/60: tunnelled:", "1/60: far-side push-outs:", "1/60: jumped over:",
               "paced: tunnelled:", "paced: far-side push-outs:", "paced: jumped over:"});
   for (const Push& p : pushes) {
     const auto cells = [&](const Outcome& x) {

@@ -2,7 +2,7 @@
 //
 //   tv-run                         every mover on bullets-wall at 1920 px/s, side by side
 //   tv-run --list                  scenes and movers, one line each
-//   tv-run --scene NAME [--mover NAME] [--ticks N] [--PARAM VALUE ...] [--trace BODY]
+//   tv-run --scene NAME [--mover NAME] [--ticks N] [--PARAM VALUE ...] [--body BODY]
 //
 // Bad flags, unknown names and bad values print a message naming the flag and the value on
 // stderr and exit with code 2.
@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "tv/app/flags.hpp"
+#include "tv/app/vocabulary.hpp"
+#include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
@@ -41,12 +43,14 @@ const char* const kUsage =
     "usage:\n"
     "  tv-run                     compare every mover on bullets-wall at 1920 px/s\n"
     "  tv-run --list              list scenes (with their parameters) and movers\n"
-    "  tv-run --scene NAME [--mover NAME] [--ticks N] [--trace BODY] [--PARAM VALUE ...]\n"
+    "  tv-run --scene NAME [--mover NAME] [--ticks N] [--body BODY] [--PARAM VALUE ...]\n"
     "      without --mover, every mover runs the scene side by side\n"
     "      --ticks N     most ticks to run; a scene stops earlier once done (default 600)\n"
-    "      --trace BODY  trace body BODY's moves and report candidates per move\n"
+    "      --body BODY   trace body BODY's moves and report candidates per move\n"
     "      --PARAM VALUE any parameter of the scene (see --list): --speed V --size S --tile T\n"
-    "                    --dt D --substep L --offset O --count N --seed S --cell C ...\n";
+    "                    --dt D --substep L --offset O --count N --seed S --cell C ...\n"
+    "      a run whose ticks would take over a second each (a huge --speed for the substep or\n"
+    "      pixel movers) is refused, with the largest speed that fits\n";
 
 struct Options {
   bool list = false;
@@ -98,9 +102,10 @@ Options parseArgs(int argc, char** argv) {
       o.mover = value;
     } else if (name == "ticks") {
       o.ticks = parseCount(name, value);
-    } else if (name == "trace") {
+    } else if (name == "body") {
       o.trace = static_cast<std::size_t>(parseCount(name, value));
     } else {
+      tv::app::refuseRetiredFlag<UsageError>(name);
       o.params.emplace_back(std::move(name), std::move(value));
     }
   }
@@ -147,7 +152,7 @@ Row runOne(const tv::sim::SceneDef& scene, const tv::sim::Params& params, std::s
   tv::sim::Simulation sim(scene, params, tv::parseMover(mover), config);
   if (o.trace) {
     if (*o.trace >= sim.bodies().size()) {
-      throw UsageError{"--trace " + std::to_string(*o.trace) + ": the scene has " +
+      throw UsageError{"--body " + std::to_string(*o.trace) + ": the scene has " +
                        std::to_string(sim.bodies().size()) + " bodies"};
     }
     sim.traceBody(*o.trace);
@@ -269,7 +274,7 @@ int run(const Options& o) {
       for (const std::string_view n : params.names())
         valid += (valid.empty() ? "--" : ", --") + std::string(n);
       throw UsageError{"--" + name + ": unknown flag (scene " + scene->name +
-                       " takes --scene, --mover, --ticks, --trace, --list and " + valid + ")"};
+                       " takes --scene, --mover, --ticks, --body, --list and " + valid + ")"};
     }
     try {
       params.set(name, parseNumber(name, value));
@@ -288,6 +293,16 @@ int run(const Options& o) {
   } else {
     const auto names = tv::moverNames();
     movers.assign(names.begin(), names.end());
+  }
+  // Every mover is checked before any runs, so a refused one costs nothing.
+  for (const std::string_view m : movers) {
+    try {
+      const tv::sim::Simulation sim(*scene, params, tv::parseMover(m));
+      if (auto why = tv::app::workLimitExceeded(params, sim.moverSpec(), sim.bodies().size()))
+        throw UsageError{*why};
+    } catch (const tv::Error&) {
+      // Reported with the mover's name when it runs, below.
+    }
   }
   std::vector<Row> rows;
   for (const std::string_view m : movers) {

@@ -35,13 +35,13 @@ void printList() {
   std::cout << "scenes:\n";
   for (const sim::SceneDef& s : sim::builtinScenes().all()) {
     std::printf("  %-16s %s\n", s.name.c_str(), s.description.c_str());
-    // Its parameters, as flags with their defaults (--size of a scene is --body-size here).
+    // Its parameters, as flags with their defaults.
     std::string line;
     const sim::Params defaults = s.defaults();
     for (const sim::ParamSpec& p : defaults.specs()) {
       if (!line.empty()) line += ' ';
       line += "--";
-      line += p.name == "size" ? "body-size" : p.name;
+      line += p.name;
       line += ' ';
       line += formatNumber(p.value);
     }

@@ -5,8 +5,9 @@ namespace tv::headless {
 const char* const kUsage =
     "usage: tv-render [--scene NAME] [--mover NAME | --compare A,B[,C...]] [--tick N | --ticks "
     "a,b,c]\n"
-    "                 [--size WxH] [--out FILE.png] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
+    "                 [--window WxH] [--out FILE.png] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
     "                 [--render-hz R] [--hide a,b] [--show a,b] [--frames K] [--timing]\n"
+    "                 [--caption TEXT]\n"
     "                 [--PARAM VALUE ...]\n"
     "       tv-render --list\n"
     "\n"
@@ -15,7 +16,7 @@ const char* const kUsage =
     "  --mover NAME     the mover (default continuous)\n"
     "  --compare A,B,.. the same scene and tick for several movers side by side\n"
     "  --tick N         the tick to show (default 1); --ticks a,b,c writes one image per tick\n"
-    "  --size WxH       image size in pixels (default 1280x720)\n"
+    "  --window WxH     image size in pixels (default 1280x720)\n"
     "  --out FILE       output PNG; {tick} is replaced by the tick. Default:\n"
     "                   <scene>_<mover>_<tick>.png, or <scene>_<A>-vs-<B>_<tick>.png with "
     "--compare\n"
@@ -29,9 +30,12 @@ const char* const kUsage =
     "                   responses history positions pixel-grid labels, or all)\n"
     "  --frames K       ImGui frames rendered before the capture (default 4, at least 2: panels\n"
     "                   placed below auto-sized ones settle on the third)\n"
+    "  --caption TEXT   with --compare: a line on what the picture shows, under its title\n"
+    "                   (the verdict line, before/after and the scale bar are always drawn)\n"
     "  --timing         print how long a frame takes (stderr; never in the image)\n"
     "  --PARAM VALUE    any parameter of the scene (--list shows each scene's with its default):\n"
-    "                   --speed --body-size --tile --dt --substep --offset ... (--size is the image)\n"
+    "                   --speed --size --tile --dt --substep --offset ... (as in tv-run, tv-bench\n"
+    "                   and the debugger's panel)\n"
     "  --list           scenes and movers with their one-line descriptions\n"
     "Exit status: 0 done, 1 rendering failed, 2 bad command line.\n";
 

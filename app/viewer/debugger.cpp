@@ -2,8 +2,10 @@
 #include "debugger.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
+#include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/still.hpp"
 
@@ -74,9 +76,25 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   overlay_ = overlay_ || options.overlay;
   showSweep_ = options.sweep;
   const sim::SceneDef& scene = ui::sceneFor(o);
-  const sim::Params params = ui::paramsFor(scene, o);
+  sim::Params params = ui::paramsFor(scene, o);
+  // Tuned values come back with their scene, unless the command line sets any parameter.
+  if (settings && o.params.empty() && settings->get("params.scene") == scene.name) {
+    const sim::Params defaults = scene.defaults();
+    for (const sim::ParamSpec& spec : defaults.specs()) {
+      try {
+        params.set(spec.name, settings->getNumber("param." + spec.name, params.get(spec.name)));
+      } catch (const Error&) {
+        // A hand-edited value out of range: the default stays.
+      }
+    }
+  }
   const ui::Overlays overlays = ui::overlaysFor(o);
   selected_ = o.body;
+  {
+    ui::PictureOptions named = o;
+    named.movers = moverNames;
+    ui::refuseDuplicateMovers(named);
+  }
   std::vector<MoverSpec> movers = parseMovers(moverNames, o.compare ? "--compare" : "--mover");
 
   states_.assign(1, ui::DebuggerState{});
@@ -135,6 +153,9 @@ void Debugger::store(Settings& s) const {
   s.setNumber("speed", speed_);
   s.setNumber("render-hz", states_[0].renderHz);
   s.setBool("help.seen", true);
+  s.set("params.scene", scene_->name);
+  for (std::size_t i = 0; i < params_.specs().size(); ++i)
+    s.setNumber("param." + params_.specs()[i].name, params_.values()[i]);
   for (const ui::OverlayToggle& t : ui::overlayToggles()) {
     s.setBool(std::string("overlay.") + t.name, states_[0].overlays.*t.flag);
   }
@@ -148,6 +169,10 @@ void Debugger::build(const sim::SceneDef& scene, const sim::Params& params,
   std::vector<std::unique_ptr<ui::Session>> sessions;
   for (const MoverSpec& m : movers) {
     sessions.push_back(std::make_unique<ui::Session>(scene, params, m, std::nullopt));
+    const sim::Simulation& s = sessions.back()->sim();
+    // A tick that would take seconds is refused here, before anything runs (and freezes).
+    if (auto why = app::workLimitExceeded(params, s.moverSpec(), s.bodies().size()))
+      throw Error(*why);
   }
   const std::size_t bodies = sessions.front()->sim().bodies().size();
   if (selected_ && *selected_ >= bodies)
@@ -174,7 +199,11 @@ void Debugger::build(const sim::SceneDef& scene, const sim::Params& params,
   divergence_.reset(scene, params, movers_);
   clock_ = 0.0;
   furthest_ = landOn;
+  // How long a re-run to this tick takes decides whether sliders follow live.
+  const auto t0 = std::chrono::steady_clock::now();
   goTo(landOn);
+  const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - t0;
+  states_[0].lastRerunMs = spent.count();
 }
 
 void Debugger::loadScene(const sim::SceneDef& scene) {
@@ -244,7 +273,10 @@ void Debugger::advance(double seconds) {
   // Nothing more can happen: stop, so the interesting ticks stay in the ring.
   const bool finished = std::all_of(sessions_.begin(), sessions_.end(),
                                     [](const auto& s) { return s->sim().finished(); });
-  if (finished) paused_ = true;
+  if (finished) {
+    paused_ = true;
+    notice_ = "the scene ended at tick " + std::to_string(tick()) + " (Play runs it again)";
+  }
 }
 
 void Debugger::select(std::optional<std::size_t> body) {
@@ -300,6 +332,21 @@ void Debugger::applyActions(const ui::Actions& a) {
   }
 }
 
+bool Debugger::tune(const std::string& param, double value) {
+  ui::DebuggerState& st = states_[0];
+  try {
+    st.draft.set(param, value);
+  } catch (const Error& e) {
+    reportError(e.what());
+    return false;
+  }
+  message_.clear();
+  ui::Actions a;
+  a.restart = true;
+  applyActions(a);
+  return message_.empty();
+}
+
 void Debugger::run(Command c) {
   const auto& all = sim::builtinScenes().all();
   const auto sceneIndex = [&] {
@@ -309,10 +356,19 @@ void Debugger::run(Command c) {
     return std::size_t{0};
   };
   switch (c) {
-    case Command::pause:
+    case Command::pause: {
+      notice_.clear();
+      const bool ended = std::all_of(sessions_.begin(), sessions_.end(),
+                                     [](const auto& s) { return s->sim().finished(); });
+      // Play on a scene that has ended plays it again, and says so, rather than pausing at once.
+      if (paused_ && ended) {
+        notice_ = "the scene had ended at tick " + std::to_string(tick()) + ": playing again from 0";
+        goTo(0);
+      }
       paused_ = !paused_;
       clock_ = 0.0;
       break;
+    }
     case Command::step:
       stepOnce();
       break;

@@ -45,6 +45,25 @@ class Debugger {
   /// Freezes anything that reads a clock out of the picture (screenshots).
   void setPinned(bool pinned) { pinned_ = pinned; }
   void openHelp() { showHelp_ = true; }
+  /// What a command does, as its key or menu item would (tests drive the debugger with it).
+  void command(Command c) { run(c); }
+  /// What a parameter's slider does on release: sets the draft and re-runs to the same tick.
+  /// False (with the reason in message()) when the value is refused; nothing else changes.
+  bool tune(const std::string& param, double value);
+  /// Applies a max substep length picked in the substep sweep: to every substep mover through
+  /// the parameter; without one, a comparison gains a substep panel and keeps its others.
+  void useSubstepLength(double length);
+
+  // Read-only views of the state, for tests and for whatever is drawn beside the debugger.
+  [[nodiscard]] const std::vector<ui::DebuggerState>& panels() const { return states_; }
+  [[nodiscard]] const std::vector<MoverSpec>& movers() const { return movers_; }
+  [[nodiscard]] const Divergence& divergence() const { return divergence_; }
+  [[nodiscard]] std::uint64_t currentTick() const { return tick(); }
+  [[nodiscard]] bool paused() const { return paused_; }
+  [[nodiscard]] const std::string& message() const { return message_; }
+  [[nodiscard]] const std::string& notice() const { return notice_; }
+  [[nodiscard]] bool helpOpen() const { return showHelp_; }
+
   /// Paused with nothing computing in the background: the window may wait for input.
   [[nodiscard]] bool idle() const {
     return paused_ && divergence_.done() && (!showSweep_ || sweep_.pending() == 0);
@@ -77,6 +96,8 @@ class Debugger {
   void drawPicker();
   void drawSweep();
   void syncCameras();
+  /// The mover the substep sweep varies: the first substep mover compared, else the first.
+  [[nodiscard]] const MoverSpec& sweptMover() const;
 
   const sim::SceneDef* scene_ = nullptr;
   sim::Params params_;
@@ -100,6 +121,8 @@ class Debugger {
   bool pinned_ = false;
   std::string pickerFilter_;
   std::string message_;  // the last error, shown in the timeline bar
+  std::string notice_;   // news that is not an error ("the scene had ended"), until the next
+  bool waited_ = false;  // the last frame waited for input (its time is not a frame's cost)
 
   Divergence divergence_;
   SubstepSweep sweep_;

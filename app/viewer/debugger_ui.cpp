@@ -47,15 +47,18 @@ bool menuItem(const char* label, Command c, bool selected = false, bool enabled 
 // [SECTION] the frame ------------------------------------------------------------------------
 
 void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
-  // Smoothed over ~10 frames, so the readout is steady enough to read.
-  frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
+  // Smoothed over ~10 frames, so the readout is steady enough to read. A frame that waited for
+  // input (idle, paused) measures the wait, not the work: left out.
+  if (!waited_)
+    frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
+  waited_ = idle();
   handleKeys(keys);
   advance(seconds);
   // Look ahead for where the movers part, a few milliseconds a frame; screenshots run it to
   // the end so the marks do not depend on how fast the machine is.
   divergence_.advance(pinned_ ? 1e9 : 3.0);
   if (showSweep_) {
-    const MoverSpec& m = movers_.front();
+    const MoverSpec& m = sweptMover();
     // The whole scene where the look-ahead found its end (bounded), else up to now.
     std::uint64_t horizon = std::max<std::uint64_t>(tick(), 1);
     if (divergence_.done())
@@ -75,7 +78,12 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   drawMain(origin, size);
   // After the world and its panels, so a panel that runs long never hides the timeline.
   drawTimeline(display, bottom);
-  if (showHelp_) drawHelp(&showHelp_);
+  if (showHelp_) {
+    // The width of the column of controls (see drawCompareSideBySide and ui::debuggerLayout).
+    const float side = compare() && !overlay_ ? std::clamp(display.x * 0.30f, 340.0f, 440.0f)
+                                              : std::clamp(display.x * 0.35f, 340.0f, 480.0f);
+    drawHelp(&showHelp_, {display.x - side, top}, {side, size.y});
+  }
   if (showSweep_) drawSweep();
   drawPicker();
 }
@@ -94,6 +102,13 @@ void Debugger::handleKeys(std::span<const KeyPress> keys) {
       run(Command::frameAll);
     } else if (k.key == GLFW_KEY_F1) {
       run(Command::help);
+    } else if (k.key == GLFW_KEY_ESCAPE) {
+      // The topmost window closes (the scene picker closes itself).
+      if (showHelp_) {
+        showHelp_ = false;
+      } else if (showSweep_) {
+        showSweep_ = false;
+      }
     }
   }
   if (io.KeyCtrl) return;
@@ -248,7 +263,11 @@ float Debugger::drawMenuBar() {
   // screenshot (it reads the clock).
   if (!pinned_) {
     char text[48];
-    std::snprintf(text, sizeof text, "frame %.1f ms", frameMs_);
+    if (idle()) {
+      std::snprintf(text, sizeof text, "idle (paused)");
+    } else {
+      std::snprintf(text, sizeof text, "frame %.1f ms", frameMs_);
+    }
     const float w = ImGui::CalcTextSize(text).x + 2.0f * ImGui::GetStyle().ItemSpacing.x;
     ImGui::SameLine(ImGui::GetWindowWidth() - w);
     ImGui::TextColored(colour(pal::kDim), "%s", text);
@@ -281,11 +300,22 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   button("Step", Command::step);
   button("Forward", Command::stepForward);
   button("Restart", Command::restart);
-  ImGui::SetNextItemWidth(110.0f);
-  float speed = static_cast<float>(speed_);
-  if (ImGui::SliderFloat("speed", &speed, 0.25f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
-    speed_ = static_cast<double>(speed);
+  // The playback rate (not the bodies' --speed): a short list, labelled before the widget.
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextColored(colour(pal::kDim), "playback");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("0.25x").x + ImGui::GetFrameHeight() * 1.6f);
+  char rate[16];
+  std::snprintf(rate, sizeof rate, "%gx", speed_);
+  if (ImGui::BeginCombo("##playback", rate)) {
+    for (const double s : kSpeeds) {
+      std::snprintf(rate, sizeof rate, "%gx", s);
+      if (ImGui::Selectable(rate, speed_ == s)) speed_ = s;
+    }
+    ImGui::EndCombo();
   }
+  ImGui::SameLine();
+  ImGui::TextColored(colour(pal::kDim), "|");
   ImGui::SameLine();
   const std::uint64_t last = std::max({furthest_, divergence_.known(), tick(), std::uint64_t{1}});
   ImGui::Text("tick %" PRIu64 " of %" PRIu64 "%s", tick(), last, divergence_.done() ? "" : "+");
@@ -295,25 +325,44 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   marks.failureText = divergence_.failureText();
   if (compare()) marks.difference = divergence_.firstDifference();
   ImGui::SameLine();
-  if (!message_.empty()) {
-    ImGui::TextColored(colour(pal::kBad), "%s", message_.c_str());
+  // Each note goes on the row whole, in its short form when the long one does not fit; the
+  // full text is on hover.
+  const float go = ImGui::CalcTextSize("go").x + ImGui::GetStyle().FramePadding.x * 2.0f +
+                   ImGui::GetStyle().ItemSpacing.x * 2.0f;
+  const auto note = [&](ImU32 c, const char* full, const char* brief, const char* hover) {
+    const float room = ImGui::GetContentRegionAvail().x - go;
+    const char* text = ImGui::CalcTextSize(full).x <= room ? full : brief;
+    if (ImGui::CalcTextSize(text).x > room) return false;
+    ImGui::TextColored(colour(c), "%s", text);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hover);
     ImGui::SameLine();
+    return true;
+  };
+  if (!message_.empty()) {
+    const std::string full = "|  " + message_;
+    (void)note(pal::kBad, full.c_str(), "|  refused: hover, or see the panel", message_.c_str());
+  } else if (!notice_.empty()) {
+    const std::string full = "|  " + notice_;
+    (void)note(pal::kRender, full.c_str(), "|  ended", notice_.c_str());
   } else {
     if (marks.failure) {
-      char text[160];
-      std::snprintf(text, sizeof text, "first failure: tick %" PRIu64 ", %s", *marks.failure,
+      char full[200], brief[64];
+      std::snprintf(full, sizeof full, "|  first failure: tick %" PRIu64 ", %s", *marks.failure,
                     marks.failureText.c_str());
-      ImGui::TextColored(colour(pal::kBad), "|  %s", text);
-      ImGui::SameLine();
-      if (ImGui::SmallButton("go##failure")) goTo(*marks.failure);
-      ImGui::SameLine();
+      std::snprintf(brief, sizeof brief, "|  failure: tick %" PRIu64, *marks.failure);
+      if (note(pal::kBad, full, brief, marks.failureText.c_str())) {
+        if (ImGui::SmallButton("go##failure")) goTo(*marks.failure);
+        ImGui::SameLine();
+      }
     }
     if (marks.difference) {
-      ImGui::TextColored(colour(pal::kRender), "|  movers differ from tick %" PRIu64,
-                         *marks.difference);
-      ImGui::SameLine();
-      if (ImGui::SmallButton("go##difference")) goTo(*marks.difference);
-      ImGui::SameLine();
+      char full[96], brief[64];
+      std::snprintf(full, sizeof full, "|  movers differ from tick %" PRIu64, *marks.difference);
+      std::snprintf(brief, sizeof brief, "|  differ: %" PRIu64, *marks.difference);
+      if (note(pal::kRender, full, brief, "the first tick whose state hashes differ")) {
+        if (ImGui::SmallButton("go##difference")) goTo(*marks.difference);
+        ImGui::SameLine();
+      }
     }
     if (!marks.failure && divergence_.done()) {
       ImGui::TextColored(colour(pal::kGood), "|  no failure in %" PRIu64 " ticks", marks.known);
@@ -332,7 +381,10 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
 // [SECTION] world: one mover, side by side, overlaid -----------------------------------------
 
 void Debugger::drawMain(ImVec2 origin, ImVec2 size) {
-  for (auto& st : states_) st.paused = paused_;
+  for (auto& st : states_) {
+    st.paused = paused_;
+    st.cameraMoved = false;
+  }
   if (follow_) {
     const Rect r = followRect();
     for (auto& st : states_) st.frameView = r;
@@ -356,7 +408,7 @@ void Debugger::drawCompareSideBySide(ImVec2 origin, ImVec2 size) {
   char title[256];
   std::snprintf(title, sizeof title,
                 "%s   tick %" PRIu64
-                "   %s %.2gx   |   velocity %g px/s, tile %g px, dt %.2f ms   |   "
+                "   %s %.2gx   |   speed %g px/s, tile %g px, dt %.2f ms   |   "
                 "traced: %s",
                 scene_->name.c_str(), tick(), paused_ ? "paused" : "running", speed_,
                 params_.get(sim::param::speed), params_.get(sim::param::tile),
@@ -394,11 +446,17 @@ void Debugger::drawCompareSideBySide(ImVec2 origin, ImVec2 size) {
 
 void Debugger::syncCameras() {
   // The panels are the same size: a zoom or pan in one is applied to all, so the movers are
-  // always compared over the same ground.
+  // always compared over the same ground. The camera itself is copied (centre and scale; each
+  // panel places it on its own screen rect): re-framing the view would fit it inside the
+  // panel's safe area and zoom out a little on every frame of a drag.
   for (std::size_t k = 0; k < states_.size(); ++k) {
-    if (states_[k].frameView) continue;
-    const Rect view = states_[k].camera.view();
-    for (auto& st : states_) st.frameView = view;
+    if (!states_[k].cameraMoved) continue;
+    const ui::Camera cam = states_[k].camera;
+    for (auto& st : states_) {
+      st.camera = cam;
+      st.frameView.reset();
+      st.cameraMoved = false;
+    }
     return;
   }
 }
@@ -488,21 +546,43 @@ void Debugger::drawPicker() {
   ImGui::EndPopup();
 }
 
+const MoverSpec& Debugger::sweptMover() const {
+  for (const MoverSpec& m : movers_) {
+    if (m.kind == MoverKind::substep) return m;
+  }
+  return movers_.front();
+}
+
 void Debugger::drawSweep() {
-  const MoverSpec& m = movers_.front();
-  const double current = m.kind == MoverKind::substep ? sessions_.front()->sim().moverSpec().maxStep
+  const MoverSpec& m = sweptMover();
+  const auto at = std::find_if(movers_.begin(), movers_.end(),
+                               [&](const MoverSpec& x) { return &x == &m; });
+  const std::size_t k = static_cast<std::size_t>(at - movers_.begin());
+  const double current = m.kind == MoverKind::substep ? sessions_[k]->sim().moverSpec().maxStep
                                                       : params_.get(sim::param::substep);
-  if (const auto length = sweep_.draw(&showSweep_, current)) {
-    sim::Params p = params_;
-    std::vector<MoverSpec> movers = movers_;
-    if (movers.front().kind != MoverKind::substep) movers.front() = sweep_.mover();
-    try {
-      p.set(sim::param::substep, *length);
-      build(*scene_, p, std::move(movers), tick());
-      message_.clear();
-    } catch (const Error& e) {
-      reportError(e.what());
+  if (const auto length = sweep_.draw(&showSweep_, current)) useSubstepLength(*length);
+}
+
+void Debugger::useSubstepLength(double length) {
+  const MoverSpec& m = sweptMover();
+  sim::Params p = params_;
+  std::vector<MoverSpec> movers = movers_;
+  // The length applies to every substep mover through the parameter. With none, one mover
+  // becomes substep-discrete (what the sweep ran); a comparison gains it as a new panel, so
+  // its "before" stays.
+  if (m.kind != MoverKind::substep) {
+    if (compare()) {
+      movers.push_back(parseMover("substep-discrete"));
+    } else {
+      movers.front() = parseMover("substep-discrete");
     }
+  }
+  try {
+    p.set(sim::param::substep, length);
+    build(*scene_, p, std::move(movers), tick());
+    message_.clear();
+  } catch (const Error& e) {
+    reportError(e.what());
   }
 }
 

@@ -1,5 +1,6 @@
 #include "divergence.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 
@@ -40,10 +41,30 @@ void Divergence::reset(const sim::SceneDef& scene, const sim::Params& params,
   failureText_.clear();
 }
 
+void Divergence::noteFailures() {
+  // The baseline is the best any mover did in each kind (none with one mover): a mover worse
+  // than it failed where another did not. Every mover is checked, not only the first two, and
+  // every one that failed at this tick is named.
+  Failures best = failuresOf(sims_.front()->counters());
+  if (sims_.size() == 1) best = Failures{0, 0, 0, 0, 0};
+  for (const auto& s : sims_) {
+    const Failures f = failuresOf(s->counters());
+    best = {std::min(best.tunnelled, f.tunnelled), std::min(best.overlaps, f.overlaps),
+            std::min(best.escapes, f.escapes), std::min(best.snags, f.snags),
+            std::min(best.jitter, f.jitter)};
+  }
+  for (const auto& s : sims_) {
+    const char* what = worse(failuresOf(s->counters()), best);
+    if (!what) continue;
+    failure_ = known_;
+    if (!failureText_.empty()) failureText_ += ", ";
+    failureText_ += s->moverSpec().name() + " " + what;
+  }
+}
+
 void Divergence::advance(double budgetMs) {
   if (done_) return;
   const auto start = std::chrono::steady_clock::now();
-  const Failures none{0, 0, 0, 0, 0};
   while (!done_) {
     bool allFinished = true;
     for (auto& s : sims_) {
@@ -51,22 +72,10 @@ void Divergence::advance(double budgetMs) {
       allFinished = allFinished && s->finished();
     }
     known_ = sims_.front()->ticks();
-    const Failures first = failuresOf(sims_.front()->counters());
-    for (std::size_t k = 0; k < sims_.size(); ++k) {
-      const sim::Simulation& s = *sims_[k];
-      if (!difference_ && k > 0 && s.stateHash() != sims_.front()->stateHash()) {
-        difference_ = known_;
-      }
-      if (failure_) continue;
-      // Compared: someone failed where another did not. Alone: the first failure.
-      const Failures f = failuresOf(s.counters());
-      const Failures& other =
-          sims_.size() > 1 ? (k == 0 ? failuresOf(sims_[1]->counters()) : first) : none;
-      if (const char* what = worse(f, other)) {
-        failure_ = known_;
-        failureText_ = s.moverSpec().name() + " " + what;
-      }
+    for (std::size_t k = 1; k < sims_.size() && !difference_; ++k) {
+      if (sims_[k]->stateHash() != sims_.front()->stateHash()) difference_ = known_;
     }
+    if (!failure_) noteFailures();
     // Runs on after the marks are found: the timeline's length is how far this has looked.
     if (allFinished || known_ >= kHorizon) done_ = true;
     const std::chrono::duration<double, std::milli> spent =

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "tv/mover.hpp"
@@ -34,13 +35,15 @@ class Divergence {
   [[nodiscard]] bool done() const { return done_; }
   /// First tick whose state differs between the movers (compare mode only).
   [[nodiscard]] std::optional<std::uint64_t> firstDifference() const { return difference_; }
-  /// First tick whose failure counts (tunnelled, overlaps, escapes, snags, jitter) differ
-  /// between the movers, or with one mover the first tick with any.
+  /// First tick at which any mover's failure counts (tunnelled, overlaps, escapes, snags,
+  /// jitter) exceed the best of the compared movers, or with one mover the first tick with any.
   [[nodiscard]] std::optional<std::uint64_t> firstFailure() const { return failure_; }
-  /// What failed first there, e.g. "discrete tunnelled".
+  /// What failed first there, e.g. "discrete tunnelled, substep-discrete tunnelled".
   [[nodiscard]] const std::string& failureText() const { return failureText_; }
 
  private:
+  void noteFailures();
+
   std::vector<std::unique_ptr<sim::Simulation>> sims_;
   std::uint64_t known_ = 0;
   bool done_ = true;

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <link.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -22,8 +23,19 @@ namespace {
 
 std::vector<KeyPress> gKeys;  // one window per process; GLFW callbacks carry no closure
 
+// A key pressed and released between two frames (a quick tap, or xdotool) would never be seen
+// down by ImGui 1.86, which polls io.KeysDown once a frame: Enter in the scene picker did
+// nothing. Such a release is held back one frame.
+std::vector<int> gPressed;        // pressed since the last frame began
+std::vector<int> gTapped;         // pressed and released since then
+std::vector<int> gReleaseNext;    // held down for one frame; released at the next
+
 void onKey(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mods) {
   if (action != GLFW_RELEASE) gKeys.push_back({key, mods});
+  if (key < 0 || key >= static_cast<int>(IM_ARRAYSIZE(ImGuiIO::KeysDown))) return;
+  if (action == GLFW_PRESS) gPressed.push_back(key);
+  if (action == GLFW_RELEASE && std::find(gPressed.begin(), gPressed.end(), key) != gPressed.end())
+    gTapped.push_back(key);
 }
 
 // Mesa's GLX loads its driver (swrast_dri.so for llvmpipe) with dlopen and unloads it when the
@@ -102,11 +114,19 @@ void GlWindow::requestClose() {
 }
 
 void GlWindow::beginFrame(bool idle) {
-  if (idle) {
+  ImGuiIO& io = ImGui::GetIO();
+  for (const int k : gReleaseNext) io.KeysDown[k] = false;
+  const bool releasing = !gReleaseNext.empty();
+  gReleaseNext.clear();
+  if (idle && !releasing) {
     glfwWaitEventsTimeout(0.1);
   } else {
     glfwPollEvents();
   }
+  for (const int k : gTapped) io.KeysDown[k] = true;
+  gReleaseNext.swap(gTapped);
+  gTapped.clear();
+  gPressed.clear();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
 }

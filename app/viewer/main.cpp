@@ -99,11 +99,23 @@ int interactive(const ViewerOptions& o) {
   const auto path = useSettings ? Settings::defaultPath() : std::nullopt;
   Settings settings;
   const bool loaded = path && settings.load(*path);
-  Debugger debugger(o, loaded ? &settings : nullptr);
+  ViewerOptions opening = o;
+  ui::PictureOptions& p = opening.picture;
+  if (!loaded && !shot && !p.sceneGiven && !p.moverGiven && !p.tickGiven) {
+    // The first run opens on the moment that matters: the tick the naive bullet passes the
+    // wall, followed, beside the substep patch and the exact sweep.
+    p.scene = "bullets-wall";
+    p.movers = {"discrete", "substep-discrete", "continuous"};
+    p.compare = true;
+    p.ticks = {2};
+    p.body = 2;
+    p.view = ui::ViewKind::follow;
+  }
+  Debugger debugger(opening, loaded ? &settings : nullptr);
   if (!loaded && !shot) debugger.openHelp();  // the first run opens Help
 
   WindowConfig config{o.picture.width, o.picture.height, "Tunnelvision debugger", shot};
-  if (loaded && !o.picture.sizeGiven) {
+  if (loaded && !o.picture.windowGiven) {
     config.width =
         static_cast<int>(std::clamp(settings.getNumber("window.width", 1280), 320.0, 8192.0));
     config.height =

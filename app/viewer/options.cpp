@@ -9,7 +9,7 @@ namespace tv::viewer {
 
 const char* const kUsage =
     "usage: tv-debugger [--scene NAME] [--mover NAME | --compare A,B[,C...]] [--tick N]\n"
-    "                   [--size WxH] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
+    "                   [--window WxH] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
     "                   [--render-hz R] [--hide a,b] [--show a,b] [--PARAM VALUE ...]\n"
     "                   [--overlay] [--sweep] [--ui-scale S] [--no-settings]\n"
     "                   [--frames K --screenshot FILE.png | --app-screenshot FILE.png]\n"
@@ -28,7 +28,8 @@ const char* const kUsage =
     "                   of the scene at the tick, write it to F and exit; tv-render given the\n"
     "                   same flags writes the same pixels\n"
     "  --app-screenshot F  the same, of the whole debugger window\n"
-    "Settings (scene, movers, layout, overlays, window size, speed) live in\n"
+    "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
+    "values) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
     "Exit status: 0 done, 1 failed (no display, GL), 2 bad command line.\n";
 

@@ -23,7 +23,7 @@ constexpr Shortcut kShortcuts[] = {
     {Command::openScene, "Ctrl+O", "open a scene: type to filter, Enter opens"},
     {Command::previousScene, "[", "previous scene"},
     {Command::nextScene, "]", "next scene"},
-    {Command::help, "F1", "this window"},
+    {Command::help, "F1", "this window (Esc closes the topmost window)"},
     {Command::quit, "Ctrl+Q", "quit (settings are saved)"},
 };
 
@@ -51,10 +51,10 @@ const char* keysOf(Command c) {
   return "";
 }
 
-void drawHelp(bool* open) {
-  ImGui::SetNextWindowSize({600, 0}, ImGuiCond_Appearing);
-  const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
-  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, {0.5f, 0.5f});
+void drawHelp(bool* open, ImVec2 pos, ImVec2 size) {
+  // Over the column of controls, beside the world: the picture it explains stays in view.
+  ImGui::SetNextWindowPos(pos, ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(size, ImGuiCond_Appearing);
   if (!ImGui::Begin("Help (F1)", open, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
@@ -73,7 +73,7 @@ void drawHelp(bool* open) {
       ImGui::TableNextColumn();
       ImGui::TextColored(key, "%s", s.keys);
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(s.what);
+      ImGui::TextWrapped("%s", s.what);
     }
     for (const MouseHelp& m : kMouse) {
       ImGui::TableNextColumn();

@@ -4,6 +4,8 @@
 
 #include <span>
 
+#include "imgui.h"
+
 namespace tv::viewer {
 
 enum class Command {
@@ -36,7 +38,7 @@ struct Shortcut {
 /// The keys of `c`, e.g. "Ctrl+O".
 [[nodiscard]] const char* keysOf(Command c);
 
-/// The Help window: every shortcut and the mouse.
-void drawHelp(bool* open);
+/// The Help window: every shortcut and the mouse; first placed at `pos`, `size`.
+void drawHelp(bool* open, ImVec2 pos, ImVec2 size);
 
 }  // namespace tv::viewer

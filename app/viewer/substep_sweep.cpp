@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "imgui.h"
+#include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/sim/simulation.hpp"
 #include "tv/ui/palette.hpp"
@@ -70,6 +71,12 @@ bool SubstepSweep::advance() {
     sim::Params params = params_;
     params.set(sim::param::substep, p.length);
     sim::Simulation s(*scene_, params, mover_);
+    // A length that cuts the moves into millions of pieces would freeze the window: skipped.
+    if (app::workLimitExceeded(params, s.moverSpec(), s.bodies().size())) {
+      p.skipped = true;
+      points_.push_back(p);
+      return true;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<Vec2> at = positionsAfter(s, ticks_);
     const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - t0;
@@ -89,7 +96,7 @@ bool SubstepSweep::advance() {
 
 std::optional<double> SubstepSweep::draw(bool* open, double currentLength) {
   std::optional<double> picked;
-  ImGui::SetNextWindowSize({430, 360}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({430, 520}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos({120, 120}, ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Substep sweep (T)", open)) {
     ImGui::End();
@@ -102,27 +109,72 @@ std::optional<double> SubstepSweep::draw(bool* open, double currentLength) {
   if (!error_.empty()) {
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(ui::palette::kBad), "%s", error_.c_str());
   }
-  std::vector<float> tunnelled, error, ms;
+  // Three small plots against the substep length, each with its axes: the length (px, log, as
+  // the lengths are multiples of the tile) along the bottom and the measure's unit at the left.
+  std::vector<double> xs, tunnelled, error, ms;
   for (const SweepPoint& p : points_) {
-    tunnelled.push_back(static_cast<float>(p.tunnelled));
-    error.push_back(static_cast<float>(p.error));
-    ms.push_back(static_cast<float>(p.msPerTick));
+    if (p.skipped) continue;
+    xs.push_back(p.length);
+    tunnelled.push_back(static_cast<double>(p.tunnelled));
+    error.push_back(p.error);
+    ms.push_back(p.msPerTick);
   }
-  const auto n = static_cast<int>(lengths_.size());
-  const float w = ImGui::GetContentRegionAvail().x;
-  const auto plot = [&](const char* label, const std::vector<float>& v, const char* fmt) {
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, fmt, v.empty() ? 0.0 : static_cast<double>(v.back()));
-    const float top = v.empty() ? 1.0f : std::max(*std::max_element(v.begin(), v.end()), 1e-6f);
-    // Padded to the full count so the x axis is the same length in every plot.
-    std::vector<float> padded = v;
-    padded.resize(static_cast<std::size_t>(n), 0.0f);
-    ImGui::PlotLines(label, padded.data(), static_cast<int>(v.size()), 0, overlay, 0.0f, top * 1.1f,
-                     {w - 110.0f, 44.0f});
+  const double xLo = lengths_.empty() ? 1.0 : lengths_.front();
+  const double xHi = lengths_.empty() ? 2.0 : std::max(lengths_.back(), xLo * 1.001);
+  const auto plot = [&](const char* title, const char* unit, const std::vector<double>& v,
+                        const char* fmt) {
+    ImDrawList& dl = *ImGui::GetWindowDrawList();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float line = ImGui::GetTextLineHeight();
+    const float axisW = ImGui::CalcTextSize("00000.0").x + 4.0f;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float w = ImGui::GetContentRegionAvail().x, h = 46.0f;
+    const ImVec2 lo{at.x + axisW, at.y + line}, hi{at.x + w - 4.0f, at.y + line + h};
+    ImGui::Dummy({w, line + h + line + style.ItemSpacing.y});
+    const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text);
+    const ImU32 dim = ui::palette::kDim;
+    char text[64];
+    std::snprintf(text, sizeof text, "%s (%s)", title, unit);
+    dl.AddText({at.x, at.y}, ink, text);
+    dl.AddRectFilled(lo, hi, ImGui::GetColorU32(ImGuiCol_FrameBg));
+    const double top = v.empty() ? 1.0 : std::max(*std::max_element(v.begin(), v.end()), 1e-9);
+    // The y axis: 0 and the largest value, in the measure's unit.
+    std::snprintf(text, sizeof text, fmt, top);
+    dl.AddText({lo.x - ImGui::CalcTextSize(text).x - 3.0f, lo.y - 1.0f}, dim, text);
+    std::snprintf(text, sizeof text, fmt, 0.0);
+    dl.AddText({lo.x - ImGui::CalcTextSize(text).x - 3.0f, hi.y - line}, dim, text);
+    const auto sx = [&](double x) {
+      return lo.x + static_cast<float>(std::log(x / xLo) / std::log(xHi / xLo)) * (hi.x - lo.x);
+    };
+    const auto sy = [&](double y) {
+      return hi.y - static_cast<float>(y / (top * 1.1)) * (hi.y - lo.y);
+    };
+    // The x axis: a tick at every length run, a label where it fits (px).
+    float lastLabel = -1e9f;
+    for (const double x : lengths_) {
+      const float X = sx(x);
+      dl.AddLine({X, hi.y}, {X, hi.y + 3.0f}, dim);
+      std::snprintf(text, sizeof text, "%g", x);
+      const float tw = ImGui::CalcTextSize(text).x;
+      if (X - tw * 0.5f > lastLabel + 6.0f && X + tw * 0.5f <= at.x + w) {
+        dl.AddText({X - tw * 0.5f, hi.y + 3.0f}, dim, text);
+        lastLabel = X + tw * 0.5f;
+      }
+    }
+    for (std::size_t i = 0; i + 1 < v.size(); ++i)
+      dl.AddLine({sx(xs[i]), sy(v[i])}, {sx(xs[i + 1]), sy(v[i + 1])}, ink, 1.5f);
+    for (std::size_t i = 0; i < v.size(); ++i) dl.AddCircleFilled({sx(xs[i]), sy(v[i])}, 2.5f, ink);
+    // Where the scene runs now.
+    if (currentLength >= xLo && currentLength <= xHi) {
+      const float X = sx(currentLength);
+      dl.AddLine({X, lo.y}, {X, hi.y}, ui::palette::kRender, 1.0f);
+    }
   };
-  plot("tunnelled", tunnelled, "last %.0f");
-  plot("error (px)", error, "last %.2f");
-  plot("ms per tick", ms, "last %.3f");
+  plot("tunnelled", "bodies", tunnelled, "%.0f");
+  plot("error", "px", error, "%.2f");
+  plot("time", "ms per tick", ms, "%.3f");
+  ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(ui::palette::kDim),
+                     "x: max substep length (px, log); orange: the length now");
   if (ImGui::BeginTable(
           "sweep", 4,
           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollY)) {
@@ -142,6 +194,11 @@ std::optional<double> SubstepSweep::draw(bool* open, double currentLength) {
         picked = p.length;
       }
       ImGui::TableNextColumn();
+      if (p.skipped) {
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(ui::palette::kDim),
+                           "skipped: over %g s a tick", app::kMaxSecondsPerTick);
+        continue;
+      }
       ImGui::TextColored(
           ImGui::ColorConvertU32ToFloat4(p.tunnelled ? ui::palette::kBad : ui::palette::kGood),
           "%" PRIu64, p.tunnelled);

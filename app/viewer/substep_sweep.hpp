@@ -20,6 +20,7 @@ struct SweepPoint {
   std::uint64_t tunnelled = 0;
   double error = 0.0;  ///< mean distance of a body from where the exact run has it, px
   double msPerTick = 0.0;
+  bool skipped = false;  ///< not run: over the work limit (tv/app/work_limit.hpp)
 };
 
 class SubstepSweep {

@@ -1,13 +1,35 @@
 #include "draw_util.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace tv::ui::detail {
 
-void label(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text) {
+void label(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text, bool anchored) {
   const char* b = text.data();
   const char* e = b + text.size();
+  const ImFont* font = ImGui::GetFont();
+  const float size = ImGui::GetFontSize();
+  if (!font) return;
+  const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, b, e);
+  // A label whose anchor is in view is moved inside the view whole, never cut at the panel's
+  // edge ("erlapping touch"); one whose anchor is out of view names nothing visible: skipped.
+  const ImVec2 lo = dl.GetClipRectMin(), hi = dl.GetClipRectMax();
+  if (at.x < lo.x - extent.x || at.x > hi.x || at.y < lo.y - extent.y || at.y > hi.y) return;
+  if (anchored) {
+    // Tied to a place (a cell's count): shown only where it fits whole, without a plate.
+    if (at.x < lo.x || at.y < lo.y || at.x + extent.x > hi.x || at.y + extent.y > hi.y) return;
+    dl.AddText({at.x + 1, at.y + 1}, IM_COL32(0, 0, 0, 200), b, e);
+    dl.AddText(at, colour, b, e);
+    return;
+  }
+  at.x = std::max(lo.x + 2.0f, std::min(at.x, hi.x - extent.x - 3.0f));
+  at.y = std::max(lo.y + 1.0f, std::min(at.y, hi.y - extent.y - 2.0f));
+  at = {std::round(at.x), std::round(at.y)};
+  // A dark plate under the text: cell counts and lines beneath never mix into the letters.
+  dl.AddRectFilled({at.x - 1, at.y}, {at.x + extent.x + 2, at.y + extent.y + 1},
+                   IM_COL32(0, 0, 0, 150));
   dl.AddText({at.x + 1, at.y + 1}, IM_COL32(0, 0, 0, 200), b, e);
   dl.AddText(at, colour, b, e);
 }

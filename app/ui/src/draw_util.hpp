@@ -11,8 +11,10 @@
 
 namespace tv::ui::detail {
 
-/// Text with a one-pixel shadow, readable on any fill.
-void label(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text);
+/// Text with a one-pixel shadow on a dark plate, readable on any fill, moved inside the clip
+/// rect whole rather than cut at its edge. `anchored` text (a cell's count) stays where it is
+/// without a plate, and is left out where it would not fit whole.
+void label(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text, bool anchored = false);
 /// A rect's outline, at least one screen pixel wide so a thin item never vanishes.
 void outline(ImDrawList& dl, const Camera& cam, const Rect& r, ImU32 colour,
              float thickness = 1.0f);

@@ -4,6 +4,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 
 #include "tv/ui/palette.hpp"
 
@@ -48,6 +49,59 @@ bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size) {
   return open;
 }
 
+// Puts the next item on this line when `text` fits there, else on the next line.
+void sameLineIfFits(const char* text) {
+  ImGui::SameLine();
+  if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(text).x) ImGui::NewLine();
+}
+
+// The first of `variants` (longest first) that fits the line; the last one otherwise, wrapped.
+void textFitting(std::initializer_list<const char*> variants, ImU32 colour) {
+  const float room = ImGui::GetContentRegionAvail().x;
+  const char* chosen = *(variants.end() - 1);
+  for (const char* v : variants) {
+    if (ImGui::CalcTextSize(v).x <= room) {
+      chosen = v;
+      break;
+    }
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", chosen);
+  ImGui::PopStyleColor();
+}
+
+// A scale bar at the bottom right of the world view: a round length (1, 2 or 5 x 10^k px) that
+// is 60..150 screen pixels long, so distances in the picture can be read without the HUD.
+void drawScaleBar(ImDrawList& dl, const Camera& cam, float coveredBottom) {
+  const double scale = cam.scale();
+  if (!(scale > 0.0) || !std::isfinite(scale)) return;
+  double length = std::pow(10.0, std::floor(std::log10(90.0 / scale)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (length * m * scale >= 60.0) {
+      length *= m;
+      break;
+    }
+  }
+  const float px = static_cast<float>(length * scale);
+  const ImVec2 hi = cam.screenMax();
+  const float y = hi.y - coveredBottom - 12.0f;
+  const float x1 = hi.x - 14.0f, x0 = x1 - px;
+  char text[32];
+  std::snprintf(text, sizeof text, "%g px", length);
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  dl.AddRectFilled({x0 - 6.0f, y - size.y - 6.0f}, {x1 + 6.0f, y + 6.0f}, IM_COL32(0, 0, 0, 150));
+  dl.AddLine({x0, y}, {x1, y}, pal::kLabel, 2.0f);
+  dl.AddLine({x0, y - 4.0f}, {x0, y + 4.0f}, pal::kLabel, 2.0f);
+  dl.AddLine({x1, y - 4.0f}, {x1, y + 4.0f}, pal::kLabel, 2.0f);
+  dl.AddText({(x0 + x1 - size.x) * 0.5f, y - size.y - 3.0f}, pal::kLabel, text);
+}
+
+std::uint64_t failuresOf(const sim::Counters& c) {
+  std::uint64_t n = c.tunnelled;
+  for (const auto& [label, field] : kFailures) n += c.*field;
+  return n;
+}
+
 }  // namespace
 
 std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerState& st,
@@ -68,10 +122,12 @@ std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerS
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
     st.camera.zoom(std::pow(1.2, static_cast<double>(io.MouseWheel)), io.MousePos);
     st.frameView.reset();
+    st.cameraMoved = true;
   }
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
     st.camera.pan(io.MouseDelta);
     st.frameView.reset();
+    st.cameraMoved = true;
   }
   if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
     const Vec2 p = st.camera.toWorld(io.MousePos);
@@ -81,7 +137,11 @@ std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerS
     }
   }
   const WorldPicture pic = session.picture();
-  drawWorld(*ImGui::GetWindowDrawList(), st.camera, pic, st.overlays);
+  ImDrawList& dl = *ImGui::GetWindowDrawList();
+  drawWorld(dl, st.camera, pic, st.overlays);
+  dl.PushClipRect(st.camera.screenMin(), st.camera.screenMax(), true);
+  drawScaleBar(dl, st.camera, std::min(st.coveredBottom, size.y * 0.4f));
+  dl.PopClipRect();
   return clicked;
 }
 
@@ -162,8 +222,35 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   ImGui::SetNextWindowPos({x0, y0}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
   float top = 0.0f;
+  // Before / after: the first panel failed where the last did not.
+  const bool beforeAfter = n > 1 && failuresOf(sessions[0]->sim().counters()) > 0 &&
+                           failuresOf(sessions[n - 1]->sim().counters()) == 0;
   if (ImGui::Begin("Title", nullptr, kOverlay)) {
-    ImGui::TextUnformatted(title.c_str());
+    ImGui::TextWrapped("%s", title.c_str());  // a narrow window wraps it, never cuts it
+    // The verdict, one coloured clause per mover: what a reader should take away.
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "verdict:");
+    for (std::size_t k = 0; k < n; ++k) {
+      const sim::Simulation& sim = sessions[k]->sim();
+      const sim::Counters& c = sim.counters();
+      std::string clause = sim.moverSpec().name() + ": ";
+      char num[96];
+      std::snprintf(num, sizeof num, "%" PRIu64 " of %zu tunnelled", c.tunnelled,
+                    sim.bodies().size());
+      clause += num;
+      for (const auto& [label, field] : kFailures) {
+        const bool used =
+            std::any_of(sessions.begin(), sessions.begin() + static_cast<std::ptrdiff_t>(n),
+                        [&](const Session* o) { return o->sim().counters().*field != 0; });
+        if (!used) continue;
+        std::snprintf(num, sizeof num, ", %s %" PRIu64, label, c.*field);
+        clause += num;
+      }
+      clause += k + 1 < n ? ";" : "";
+      sameLineIfFits(clause.c_str());
+      ImGui::TextColored(
+          ImGui::ColorConvertU32ToFloat4(failuresOf(c) > 0 ? pal::kBad : pal::kGood), "%s",
+          clause.c_str());
+    }
     top = ImGui::GetWindowHeight();
   }
   ImGui::End();
@@ -182,43 +269,70 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   for (std::size_t k = 0; k < n; ++k) {
     Session& s = *sessions[k];
     DebuggerState& st = states[k];
-    const std::string name = s.sim().moverSpec().name();
+    // Nothing covers a comparison's panels (title and legend sit outside them): a margin left
+    // from the one-mover view would shrink every framing.
+    st.coveredTop = st.coveredBottom = 0.0f;
+    std::string name = s.sim().moverSpec().name();
+    if (beforeAfter && k == 0) name = "before: " + name;
+    if (beforeAfter && k + 1 == n) name = "after: " + name;
+    // The id is the panel's place, so a title that changes (before/after) keeps the window.
+    name += "###panel" + std::to_string(k);
     place({x0 + w * static_cast<float>(k), y0 + top}, {w, h});
     if (ImGui::Begin(name.c_str(), nullptr, kFixed | ImGuiWindowFlags_NoScrollbar)) {
-      // Three lines of numbers under the picture: the verdict, the traced move, the cost.
-      const float stats = ImGui::GetTextLineHeightWithSpacing() * 3.0f + 4.0f;
+      // Lines of numbers under the picture: the verdict, the traced move, the cost; a narrow
+      // panel gets a line more, for the verdict's failure counts.
+      const float lines = w < 420.0f ? 4.0f : 3.0f;
+      const float stats = ImGui::GetTextLineHeightWithSpacing() * lines + 4.0f;
       const ImVec2 avail = ImGui::GetContentRegionAvail();
       if (auto pick = worldView("##world", s, st, {avail.x, std::max(avail.y - stats, 40.0f)})) {
         picked = PanelPick{k, *pick};
       }
       const sim::Counters& c = s.sim().counters();
       const std::size_t bodies = s.sim().bodies().size();
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.tunnelled ? pal::kBad : pal::kGood),
-                         "tunnelled so far: %" PRIu64 " of %zu", c.tunnelled, bodies);
+      char text[160];
+      std::snprintf(text, sizeof text, "tunnelled so far: %" PRIu64 " of %zu", c.tunnelled, bodies);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.tunnelled ? pal::kBad : pal::kGood), "%s",
+                         text);
       // The scene's other failure counts, where any panel has one, so the columns line up.
       for (const auto& [label, field] : kFailures) {
         const bool used =
             std::any_of(sessions.begin(), sessions.begin() + static_cast<std::ptrdiff_t>(n),
                         [&](const Session* o) { return o->sim().counters().*field != 0; });
         if (!used) continue;
-        ImGui::SameLine();
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.*field ? pal::kBad : pal::kGood),
-                           " %s %" PRIu64, label, c.*field);
+        std::snprintf(text, sizeof text, " %s %" PRIu64, label, c.*field);
+        sameLineIfFits(text);
+        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.*field ? pal::kBad : pal::kGood), "%s",
+                           text);
       }
-      ImGui::SameLine();
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "  hits %" PRIu64, c.hits);
+      std::snprintf(text, sizeof text, "  hits %" PRIu64, c.hits);
+      sameLineIfFits(text);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "%s", text);
       const auto moves = s.moves();
       if (!moves.empty()) {
         const MoveTrace& m = moves.back().trace;
-        ImGui::Text("tick %" PRIu64 " move: %zu cells, %zu candidates, %zu hits", moves.back().tick,
-                    m.cells.size(), m.candidates.size(), m.hits.size());
+        char full[160], brief[160];
+        std::snprintf(full, sizeof full, "tick %" PRIu64 " move: %zu cells, %zu candidates, %zu hits",
+                      moves.back().tick, m.cells.size(), m.candidates.size(), m.hits.size());
+        std::snprintf(brief, sizeof brief, "tick %" PRIu64 ": %zu cells, %zu cand., %zu hits",
+                      moves.back().tick, m.cells.size(), m.candidates.size(), m.hits.size());
+        textFitting({full, brief}, pal::kLabel);
+      } else if (s.selected() && *s.selected() < bodies) {
+        // Say why: a body that has stopped no longer moves, so there is no move to trace.
+        textFitting({s.sim().bodies()[*s.selected()].active ? "no move traced yet"
+                                                             : "no move traced: the body has stopped",
+                     s.sim().bodies()[*s.selected()].active ? "no move yet" : "stopped: no move"},
+                    pal::kDim);
       } else {
-        ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kDim), "no move traced");
+        textFitting({"no body traced"}, pal::kDim);
       }
       const sim::TraceStats& t = s.sim().traceStats();
       if (t.moves > 0) {
-        ImGui::Text("candidates per move: %.2f mean over %" PRIu64 " moves",
-                    static_cast<double>(t.candidates) / static_cast<double>(t.moves), t.moves);
+        const double mean = static_cast<double>(t.candidates) / static_cast<double>(t.moves);
+        char full[160], brief[160];
+        std::snprintf(full, sizeof full, "candidates per move: %.2f mean over %" PRIu64 " moves",
+                      mean, t.moves);
+        std::snprintf(brief, sizeof brief, "cand./move: %.2f (%" PRIu64 " moves)", mean, t.moves);
+        textFitting({full, brief}, pal::kLabel);
       }
     }
     ImGui::End();

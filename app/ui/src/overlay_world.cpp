@@ -81,7 +81,7 @@ void drawCellCounts(ImDrawList& dl, const Camera& cam, const World& world) {
     char text[24];
     std::snprintf(text, sizeof text, "%zu", n);
     const ImVec2 at = cam.toScreenMin(world.grid().bounds(c));
-    detail::label(dl, {at.x + 3, at.y + 2}, pal::kOccupiedText, text);
+    detail::label(dl, {at.x + 3, at.y + 2}, pal::kOccupiedText, text, true);
   });
 }
 

@@ -2,6 +2,7 @@
 #include "tv/ui/panels.hpp"
 
 #include <cfloat>
+#include <cmath>
 #include <cinttypes>
 #include <cstdio>
 #include <string>
@@ -19,14 +20,44 @@ ImVec4 colour(ImU32 c) {
   return ImGui::ColorConvertU32ToFloat4(c);
 }
 
-// The common parameters under the names the issue and the README use.
-const char* friendlyName(const std::string& name) {
-  if (name == sim::param::speed) return "velocity";
-  if (name == sim::param::tile) return "tile size";
-  if (name == sim::param::cell) return "cell size";
-  if (name == sim::param::substep) return "max substep length";
-  if (name == sim::param::size) return "body size";
-  return name.c_str();
+// A slider's range and scale: what a person tunes, not the whole range a value may take (a
+// value typed with Ctrl+click may go beyond it, as far as the parameter allows).
+struct SliderRange {
+  double lo, hi;
+  bool log;
+};
+
+SliderRange sliderRange(const sim::ParamSpec& spec) {
+  const std::string& n = spec.name;
+  if (n == sim::param::speed) return {1.0, 1e6, true};
+  if (n == sim::param::dt) return {1e-3, 0.1, true};
+  if (n == sim::param::size || n == sim::param::tile || n == sim::param::cell)
+    return {0.5, 512.0, true};
+  if (n == sim::param::substep) return {0.0, 64.0, false};
+  if (n == sim::param::offset) return {0.0, 1e9, true};
+  const double lo = std::isfinite(spec.min) ? spec.min : -1e6;
+  const double hi = std::isfinite(spec.max) ? spec.max : 1e6;
+  return {lo, hi, lo > 0.0 && hi / lo >= 100.0};
+}
+
+// Dragged values snap to round numbers: 1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten
+// (Shift: three significant digits, for fine steps).
+double snapped(double v, bool fine, bool integer) {
+  if (v == 0.0 || !std::isfinite(v)) return v;
+  const double mag = std::pow(10.0, std::floor(std::log10(std::abs(v))));
+  double out = v;
+  if (fine) {
+    out = std::round(v / mag * 100.0) * mag / 100.0;
+  } else {
+    constexpr double kSteps[] = {1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10};
+    const double m = std::abs(v) / mag;
+    double best = kSteps[0];
+    for (const double step : kSteps) {
+      if (std::abs(step - m) < std::abs(best - m)) best = step;
+    }
+    out = std::copysign(best * mag, v);
+  }
+  return integer ? std::round(out) : out;
 }
 
 void rowLabel(const char* text) {
@@ -88,18 +119,30 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
       ImGui::EndCombo();
     }
     for (const sim::ParamSpec& spec : st.draft.specs()) {
-      const std::string label =
-          std::string(friendlyName(spec.name)) + (spec.unit.empty() ? "" : " (" + spec.unit + ")");
+      // Labelled with the flag's name, as in every tool and CSV column.
+      const std::string label = spec.name + (spec.unit.empty() ? "" : " (" + spec.unit + ")");
       rowLabel(label.c_str());
       double v = st.draft.get(spec.name);
-      const double speed = spec.integer ? 1.0 : (v != 0.0 ? std::abs(v) * 0.01 : 0.01);
       const std::string id = "##" + spec.name;
-      if (ImGui::DragScalar(id.c_str(), ImGuiDataType_Double, &v, static_cast<float>(speed),
-                            &spec.min, &spec.max, spec.integer ? "%.0f" : "%.6g")) {
+      const SliderRange r = sliderRange(spec);
+      const bool changed = ImGui::SliderScalar(
+          id.c_str(), ImGuiDataType_Double, &v, &r.lo, &r.hi, spec.integer ? "%.0f" : "%.6g",
+          r.log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+      if (changed) {
+        // Dragging snaps; a value typed with Ctrl+click is taken exactly.
+        const bool dragging = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+        if (dragging) v = snapped(v, ImGui::GetIO().KeyShift, spec.integer);
         setDraft(st, spec.name, v);
+        // Live while the slider moves when a re-run to this tick is cheap; else on release.
+        if (dragging && st.lastRerunMs < kLiveRerunMs) a.restart = true;
       }
       if (ImGui::IsItemDeactivatedAfterEdit()) a.restart = true;
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.description.c_str());
+      if (ImGui::IsItemActive() && st.lastRerunMs >= kLiveRerunMs) {
+        ImGui::SetTooltip("re-runs on release (the last re-run took %.0f ms)", st.lastRerunMs);
+      } else if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("--%s: %s\ndrag: round values (Shift: fine); Ctrl+click: type exactly",
+                          spec.name.c_str(), spec.description.c_str());
+      }
     }
     rowLabel("render rate (Hz)");
     const double lo = 0.0, hi = 1000.0;
@@ -112,15 +155,26 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
     }
     ImGui::EndTable();
   }
-  if (!st.error.empty()) ImGui::TextColored(colour(pal::kBad), "%s", st.error.c_str());
+  if (!st.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kBad));
+    ImGui::TextWrapped("%s", st.error.c_str());  // a refusal explains itself: never cut
+    ImGui::PopStyleColor();
+  }
 
+  // The same names and keys as the timeline's buttons; a narrow column wraps them.
+  const auto sameLineIfFits = [](const char* next) {
+    ImGui::SameLine();
+    const float w = ImGui::CalcTextSize(next).x + ImGui::GetStyle().FramePadding.x * 2.0f;
+    if (ImGui::GetContentRegionAvail().x < w) ImGui::NewLine();
+  };
   a.restart |= ImGui::Button("Restart (R)");
-  ImGui::SameLine();
+  sameLineIfFits("Back (,)");
   a.stepBack = ImGui::Button("Back (,)");
-  ImGui::SameLine();
-  a.step = ImGui::Button("Step (.)");
-  ImGui::SameLine();
-  a.togglePause = ImGui::Button(st.paused ? "Play (Space)" : "Pause (Space)");
+  sameLineIfFits("Forward (.)");
+  a.step = ImGui::Button("Forward (.)");
+  const char* play = st.paused ? "Play (Space)" : "Pause (Space)";
+  sameLineIfFits(play);
+  a.togglePause = ImGui::Button(play);
 
   if (ImGui::CollapsingHeader("Overlays") && ImGui::BeginTable("overlays", 3)) {
     for (const OverlayToggle& t : overlayToggles()) {
@@ -140,13 +194,19 @@ void inspectorContents(const Session& session) {
   }
   const std::size_t i = *session.selected();
   const sim::Body& b = s.bodies()[i];
-  ImGui::Text("body %zu  %s", i, b.active ? "moving" : "stopped");
-  ImGui::Text("at (%.3f, %.3f)  size %g x %g", b.rect.x, b.rect.y, b.rect.w, b.rect.h);
-  ImGui::Text("velocity (%.1f, %.1f) px/s", b.velocity.x, b.velocity.y);
+  ImGui::TextWrapped("body %zu  %s", i, b.active ? "moving" : "stopped");
+  ImGui::TextWrapped("at (%.3f, %.3f)  size %g x %g", b.rect.x, b.rect.y, b.rect.w, b.rect.h);
+  ImGui::TextWrapped("velocity (%.1f, %.1f) px/s", b.velocity.x, b.velocity.y);
   const auto moves = session.moves();
   if (moves.empty()) {
-    ImGui::TextColored(colour(pal::kDim), "no move traced yet");
+    // Say why: a body that has stopped makes no move, so there is nothing to trace.
+    ImGui::TextColored(colour(pal::kDim), "%s",
+                       b.active ? "no move traced yet" : "no move traced: the body has stopped");
     return;
+  }
+  if (!b.active && moves.back().tick < s.ticks()) {
+    ImGui::TextColored(colour(pal::kDim), "stopped: its last move was at tick %" PRIu64,
+                       moves.back().tick);
   }
   // Newest first: the move on screen is the one to read.
   for (std::size_t k = moves.size(); k-- > 0;) {
@@ -157,10 +217,10 @@ void inspectorContents(const Session& session) {
     const bool shown = ImGui::TreeNodeEx("move", open, "tick %" PRIu64 " move by %s: %zu hits",
                                          tm.tick, std::string(m.mover).c_str(), m.hits.size());
     if (shown) {
-      ImGui::Text("%zu cells, %zu candidates, %zu legs, %zu substeps", m.cells.size(),
+      ImGui::TextWrapped("%zu cells, %zu candidates, %zu legs, %zu substeps", m.cells.size(),
                   m.candidates.size(), m.legs.size(), m.substeps.size());
-      ImGui::Text("(%.3f, %.3f) -> goal (%.3f, %.3f)", m.start.x, m.start.y, m.goal.x, m.goal.y);
-      ImGui::Text("ended at (%.3f, %.3f)", m.final.x, m.final.y);
+      ImGui::TextWrapped("(%.3f, %.3f) -> goal (%.3f, %.3f)", m.start.x, m.start.y, m.goal.x, m.goal.y);
+      ImGui::TextWrapped("ended at (%.3f, %.3f)", m.final.x, m.final.y);
       // Two lines per hit, the fields of the Collision record as core filled them.
       for (std::size_t h = 0; h < m.hits.size(); ++h) {
         const Collision& c = m.hits[h];
@@ -169,11 +229,13 @@ void inspectorContents(const Session& session) {
         std::snprintf(ti, sizeof ti, c.overlaps ? "overlapping" : "ti %.4f", c.ti);
         ImGui::TextColored(colour(pal::kHit), "hit %zu", h + 1);
         ImGui::SameLine();
-        ImGui::Text("%s  %s  normal %+.0f,%+.0f  %s%s", session.describe(c.other).c_str(), ti,
+        ImGui::TextWrapped("%s  %s  normal %+.0f,%+.0f  %s%s", session.describe(c.other).c_str(), ti,
                     c.normal.x + 0.0, c.normal.y + 0.0, response.c_str(),
                     c.corner ? " (corner)" : "");
-        ImGui::TextColored(colour(pal::kDim), "   touch (%.3f, %.3f)  %s (%.3f, %.3f)", c.touch.x,
-                           c.touch.y, "target", c.target.x, c.target.y);
+        ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kDim));
+        ImGui::TextWrapped("   touch (%.3f, %.3f)  %s (%.3f, %.3f)", c.touch.x, c.touch.y,
+                           "target", c.target.x, c.target.y);
+        ImGui::PopStyleColor();
       }
       ImGui::TreePop();
     }

@@ -2,6 +2,7 @@
 #include "tv/ui/picture_options.hpp"
 
 #include "tv/app/flags.hpp"
+#include "tv/app/vocabulary.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -36,17 +37,17 @@ double parseReal(std::string_view flag, std::string_view text) {
   return app::parseFinite<UsageError>(flag, text);
 }
 
-void parseSize(std::string_view text, PictureOptions& o) {
+void parseWindow(std::string_view text, PictureOptions& o) {
   const std::size_t x = text.find('x');
   const auto bad = [&] {
-    return UsageError{"--size: expected WxH with 64 <= W, H <= 8192 (e.g. 1280x720), but got '" +
+    return UsageError{"--window: expected WxH with 64 <= W, H <= 8192 (e.g. 1280x720), but got '" +
                       std::string(text) + "'"};
   };
   if (x == std::string_view::npos) throw bad();
   std::uint64_t w = 0, h = 0;
   try {
-    w = parseTick("size", text.substr(0, x));
-    h = parseTick("size", text.substr(x + 1));
+    w = parseTick("window", text.substr(0, x));
+    h = parseTick("window", text.substr(x + 1));
   } catch (const UsageError&) {
     throw bad();
   }
@@ -133,9 +134,9 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       std::sort(o.ticks.begin(), o.ticks.end());
       o.ticks.erase(std::unique(o.ticks.begin(), o.ticks.end()), o.ticks.end());
       o.tickGiven = true;
-    } else if (name == "size") {
-      parseSize(value, o);
-      o.sizeGiven = true;
+    } else if (name == "window") {
+      parseWindow(value, o);
+      o.windowGiven = true;
     } else if (name == "out") {
       if (value.empty()) throw UsageError{"--out: needs a file name"};
       if (value.size() < 4 || value.compare(value.size() - 4, 4, ".png") != 0) {
@@ -163,12 +164,18 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
                          value + "'"};
       }
       o.frames = static_cast<int>(k);
+    } else if (name == "caption") {
+      if (value.size() > 300) {
+        throw UsageError{"--caption: at most 300 characters (one line), but got " +
+                         std::to_string(value.size())};
+      }
+      o.caption = value;
     } else if (name == "hide" || name == "show") {
       auto& list = name == "hide" ? o.hide : o.show;
       for (std::string& s : splitList(name, value)) list.push_back(std::move(s));
-    } else if (name == "body-size") {
-      o.params.emplace_back("size", std::move(value));
     } else {
+      app::refuseRetiredFlag<UsageError>(name);
+      if (name == "size") app::refuseWindowSizeAsSize<UsageError>(value);
       o.params.emplace_back(std::move(name), std::move(value));
     }
   }

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <exception>
 
+#include "tv/app/flags.hpp"
+#include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/ui/layout.hpp"
@@ -17,7 +19,7 @@ std::string compareTitle(const Session& s, const PictureOptions& o, std::uint64_
   const sim::Params& p = s.sim().params();
   char text[512];
   std::snprintf(text, sizeof text,
-                "%s at tick %llu   |   velocity %g px/s, body %g px, tile %g px, dt %.2f ms, "
+                "%s at tick %llu   |   speed %g px/s, size %g px, tile %g px, dt %.2f ms, "
                 "max substep %s   |   traced: %s",
                 o.scene.c_str(), static_cast<unsigned long long>(tick), p.get(sim::param::speed),
                 p.get(sim::param::size), p.get(sim::param::tile), p.get(sim::param::dt) * 1000.0,
@@ -60,25 +62,16 @@ const sim::SceneDef& sceneFor(const PictureOptions& o) {
 sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o) {
   sim::Params p = scene.defaults();
   for (const auto& [name, text] : o.params) {
-    const std::string flag = "--" + (name == "size" ? std::string("body-size") : name);
+    const std::string flag = "--" + name;
     if (!p.has(name)) {
       std::string valid;
-      for (const std::string_view n : p.names()) {
-        if (n != "size") valid += (valid.empty() ? "--" : ", --") + std::string(n);
-      }
+      for (const std::string_view n : p.names())
+        valid += (valid.empty() ? "--" : ", --") + std::string(n);
       throw UsageError{flag + ": neither a flag nor a parameter of scene '" + scene.name +
-                       "' (its parameters: " + valid + ", --body-size)"};
+                       "' (its parameters: " + valid + ")"};
     }
-    double v = 0.0;
-    std::size_t used = 0;
-    try {
-      v = std::stod(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != text.size()) {
-      throw UsageError{flag + ": expected a number, but got '" + text + "'"};
-    }
+    // Read as every tool reads a number (tv/app/flags.hpp): the same message everywhere.
+    const double v = app::parseFinite<UsageError>(name, text);
     try {
       p.set(name, v);
     } catch (const Error& e) {
@@ -86,6 +79,17 @@ sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o) {
     }
   }
   return p;
+}
+
+void refuseDuplicateMovers(const PictureOptions& o) {
+  for (std::size_t i = 0; i < o.movers.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (o.movers[i] == o.movers[j]) {
+        throw UsageError{"--compare: '" + o.movers[i] +
+                         "' is named twice; each panel shows a different mover"};
+      }
+    }
+  }
 }
 
 Overlays overlaysFor(const PictureOptions& o) {
@@ -115,6 +119,7 @@ Overlays overlaysFor(const PictureOptions& o) {
 
 Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
   const sim::Params params = paramsFor(*scene_, o);
+  refuseDuplicateMovers(o);
   (void)overlaysFor(o);  // a bad --hide/--show fails before anything runs
   for (const std::string& m : o.movers) {
     MoverSpec spec;
@@ -128,6 +133,9 @@ Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
     } catch (const Error& e) {
       throw UsageError{"scene '" + scene_->name + "': " + e.what()};
     }
+    const sim::Simulation& sim = sessions_.back()->sim();
+    if (auto why = app::workLimitExceeded(params, sim.moverSpec(), sim.bodies().size()))
+      throw UsageError{*why};
     try {
       sessions_.back()->select(o.body);
     } catch (const Error& e) {
@@ -158,6 +166,7 @@ void Still::beginImage() {
     syncDraft(states_[k], *sessions_[k]);
   }
   title_ = o_.compare ? compareTitle(*sessions_.front(), o_, sessions_.front()->sim().ticks()) : "";
+  if (o_.compare && !o_.caption.empty()) title_ += "\n" + o_.caption;
 }
 
 void Still::drawFrame(ImVec2 display) {

@@ -21,6 +21,9 @@ struct DebuggerState {
   /// The world rect to frame every frame (headless, or "frame" pressed); none: the camera
   /// keeps whatever the person zoomed and panned to.
   std::optional<Rect> frameView;
+  /// Set by the world view when a wheel zoom or a right drag moved the camera this frame; the
+  /// comparison copies that camera to its other panels and clears it.
+  bool cameraMoved = false;
   /// Screen pixels at the top and bottom of the world view that the HUD and the legend covered
   /// in the last frame: framing keeps the action clear of them.
   float coveredTop = 0.0f;
@@ -33,7 +36,13 @@ struct DebuggerState {
   std::string draftScene;
   std::string draftMover;
   std::string error;  ///< the last rejected edit, shown in red until the next one
+  /// How long the last re-run to the current tick took (wall ms, set by the viewer): sliders
+  /// re-run live while it is under kLiveRerunMs, else on release.
+  double lastRerunMs = 1e9;
 };
+
+/// Re-runs quicker than this follow a slider live.
+inline constexpr double kLiveRerunMs = 30.0;
 
 /// What the controls asked for this frame.
 struct Actions {

@@ -1,5 +1,5 @@
 #pragma once
-/// The command line that names a picture: scene, mover or movers, tick, size, traced body,
+/// The command line that names a picture: scene, mover or movers, tick, window, traced body,
 /// view, render rate, overlays and scene parameters. tv-render and tv-debugger's screenshot mode
 /// read the same flags, so one command line gives the same picture from either. Parsing only
 /// checks the form of each flag; names (scene, mover, parameter) are checked against the
@@ -28,7 +28,7 @@ struct PictureOptions {
   std::vector<std::string> movers = {"continuous"};
   bool compare = false;
   std::vector<std::uint64_t> ticks = {1};  ///< increasing, no repeats
-  int width = 1280, height = 720;
+  int width = 1280, height = 720;  ///< --window WxH (--size is the body size, a parameter)
   std::optional<std::string> out;  ///< may hold {tick}; default <scene>_<mover>_<tick>.png
   std::optional<std::size_t> body = 0;
   ViewKind view = ViewKind::scene;
@@ -36,9 +36,11 @@ struct PictureOptions {
   double renderHz = 0.0;
   int frames = 4;
   std::vector<std::string> hide, show;
+  /// One line on what the picture shows, drawn under a comparison's title (--caption TEXT).
+  std::string caption;
   std::vector<std::pair<std::string, std::string>> params;  ///< --NAME VALUE, in order
   /// Which flags were on the command line (a program with saved settings lets these win).
-  bool sceneGiven = false, moverGiven = false, tickGiven = false, sizeGiven = false;
+  bool sceneGiven = false, moverGiven = false, tickGiven = false, windowGiven = false;
 };
 
 /// Throws UsageError naming the flag. Unknown `--NAME VALUE` pairs are kept as parameters.
