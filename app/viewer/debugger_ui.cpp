@@ -47,6 +47,13 @@ bool menuItem(const char* label, Command c, bool selected = false, bool enabled 
 // [SECTION] the frame ------------------------------------------------------------------------
 
 void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
+  if (recording_) {
+    recording_->frame(seconds, keys);
+    if (!recording_->wantsClose()) return;
+    states_[0].overlays = recording_->overlays();
+    recording_.reset();
+    return;
+  }
   // Smoothed over ~10 frames, so the readout is steady enough to read.
   frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
   handleKeys(keys);
@@ -78,6 +85,7 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   if (showHelp_) drawHelp(&showHelp_);
   if (showSweep_) drawSweep();
   drawPicker();
+  if (const auto path = recordingDialog_.draw()) tryOpenRecording(*path);
 }
 
 // [SECTION] keys -----------------------------------------------------------------------------
@@ -160,6 +168,7 @@ float Debugger::drawMenuBar() {
   };
   if (ImGui::BeginMenu("File")) {
     item("Open scene...", Command::openScene);
+    if (ImGui::MenuItem("Open recording...")) recordingDialog_.open();
     item("Restart", Command::restart);
     ImGui::Separator();
     item("Quit", Command::quit);

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "debugger.hpp"
@@ -16,6 +17,7 @@
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/palette.hpp"
+#include "tv/ui/recording_still.hpp"
 #include "tv/ui/still.hpp"
 
 namespace tv::viewer {
@@ -68,18 +70,33 @@ void scaleUi(float scale) {
 // Smoke mode: tv-render's picture, through GLFW and GLX.
 int screenshot(const ViewerOptions& o) {
   const ui::PictureOptions& p = o.picture;
-  ui::Still still(p);
-  still.advanceTo(p.ticks.front());
+  // A scene's still, or a recording's (tv-render --open).
+  std::optional<ui::Still> still;
+  std::optional<ui::RecordingStill> recorded;
+  if (o.recording) {
+    recorded.emplace(*o.recording, p);
+  } else {
+    still.emplace(p);
+    still->advanceTo(p.ticks.front());
+  }
   GlWindow window({p.width, p.height, "Tunnelvision", true});
   checkSize(window, p.width, p.height);
   ImGui::GetIO().DisplaySize = {static_cast<float>(p.width), static_cast<float>(p.height)};
   scaleUi(1.0f);
-  still.beginImage();
+  if (recorded) {
+    recorded->beginImage();
+  } else {
+    still->beginImage();
+  }
   for (int f = 0; f < p.frames; ++f) {
     window.beginFrame();
     pinInput();
     ImGui::NewFrame();
-    still.drawFrame(ImGui::GetIO().DisplaySize);
+    if (recorded) {
+      recorded->drawFrame(ImGui::GetIO().DisplaySize);
+    } else {
+      still->drawFrame(ImGui::GetIO().DisplaySize);
+    }
     ImGui::Render();
     window.render(ui::palette::kBackground);
     if (f + 1 == p.frames) {
@@ -115,6 +132,11 @@ int interactive(const ViewerOptions& o) {
                                       : (shot ? 1.0f : std::max(window.contentScale(), 1.0f));
   scaleUi(scale);
   debugger.setPinned(shot);
+  if (o.recording) {
+    RecordingDebugger& r = debugger.openRecording(o.recording->path);
+    r.show(o.recording->frame, o.recording->call, o.recording->item);
+    if (!loaded && !shot) r.openHelp();
+  }
 
   auto last = std::chrono::steady_clock::now();
   for (int f = 0; !window.shouldClose() && !debugger.wantsQuit(); ++f) {
@@ -126,6 +148,7 @@ int interactive(const ViewerOptions& o) {
       pinInput();
       seconds = 0.0;
     }
+    for (const std::string& dropped : window.takeDrops()) debugger.tryOpenRecording(dropped);
     ImGui::NewFrame();
     debugger.frame(std::min(seconds, 0.25), window.takeKeys());
     ImGui::Render();
