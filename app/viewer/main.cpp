@@ -14,6 +14,7 @@
 #include "imgui.h"
 #include "options.hpp"
 #include "settings.hpp"
+#include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/palette.hpp"
@@ -119,6 +120,22 @@ int interactive(const ViewerOptions& o) {
   Debugger debugger(o, loaded ? &settings : nullptr);
   if (!loaded && !shot) debugger.openHelp();  // the first run opens Help
 
+  // A recording opens before the window does, so a bad file or flag fails without a display.
+  debugger.setPinned(shot);
+  if (o.recording) {
+    RecordingDebugger& r = debugger.openRecording(o.recording->path);
+    r.show(o.recording->frame, o.recording->call, o.recording->item);
+    if (o.recording->whatIf) {
+      MoverSpec m;
+      try {
+        m = parseMover(*o.recording->whatIf);
+      } catch (const Error& e) {
+        throw ui::UsageError{std::string("--what-if: ") + e.what()};
+      }
+      r.startWhatIf(m, o.recording->updatesAsMoves);
+    }
+    if (!loaded && !shot) r.openHelp();
+  }
   WindowConfig config{o.picture.width, o.picture.height, "Tunnelvision debugger", shot};
   if (loaded && !o.picture.sizeGiven) {
     config.width =
@@ -132,11 +149,7 @@ int interactive(const ViewerOptions& o) {
                                       : (shot ? 1.0f : std::max(window.contentScale(), 1.0f));
   scaleUi(scale);
   debugger.setPinned(shot);
-  if (o.recording) {
-    RecordingDebugger& r = debugger.openRecording(o.recording->path);
-    r.show(o.recording->frame, o.recording->call, o.recording->item);
-    if (!loaded && !shot) r.openHelp();
-  }
+
 
   auto last = std::chrono::steady_clock::now();
   for (int f = 0; !window.shouldClose() && !debugger.wantsQuit(); ++f) {

@@ -14,6 +14,7 @@ const char* const kUsage =
     "                   [--overlay] [--sweep] [--ui-scale S] [--no-settings]\n"
     "                   [--frames K --screenshot FILE.png | --app-screenshot FILE.png]\n"
     "       tv-debugger GAME.tvrec [--frame N] [--call K] [--item LABEL] [--size WxH]\n"
+    "                   [--what-if MOVER [--updates-as-moves]]\n"
     "                   [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b] [...as above]\n"
     "\n"
     "The interactive debugger: a window (GLFW, OpenGL 3.3) showing a scene frame by frame, what\n"
@@ -33,6 +34,8 @@ const char* const kUsage =
     "A recording (GAME.tvrec, written by tv::Recorder; or File > Open recording..., or drop the\n"
     "file on the window) opens at frame N (default 0), with call K of it selected and the item\n"
     "labelled LABEL traced; --screenshot then writes tv-render --open's picture of it.\n"
+    "  --what-if MOVER  re-run the recording with MOVER beside the recorded run (What-if menu)\n"
+    "  --updates-as-moves  in that run, an update that only moves an item is made a move\n"
     "Settings (scene, movers, layout, overlays, window size, speed) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
     "Exit status: 0 done, 1 failed (no display, GL), 2 bad command line.\n";

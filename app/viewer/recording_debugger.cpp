@@ -108,6 +108,15 @@ void RecordingDebugger::selectCall(std::optional<std::uint32_t> k) {
 
 void RecordingDebugger::select(std::optional<ItemId> item) {
   try {
+    // An item picked in the outliner that is not in the world now: go to where it is.
+    if (item && !session_->world().has(*item)) {
+      for (const RecordedItem& r : session_->replay().items()) {
+        if (r.id != *item) continue;
+        paused_ = true;
+        session_->goTo(std::clamp(session_->frame(), r.firstFrame, r.lastFrame));
+        if (whatIf_) whatIf_->session->goTo(session_->frame());
+      }
+    }
     session_->select(item);
     syncWhatIf();
   } catch (const std::exception& e) {

@@ -165,6 +165,7 @@ void RecordingDebugger::drawTimeline(ImVec2 display, float h) {
   ImGui::Text("frame %" PRIu64 " (0..%" PRIu64 ")", frame, session_->lastFrame());
 
   TimelineMarks marks;
+  marks.unit = "frame";
   marks.known = validation_.done() ? session_->lastFrame() : validation_.progress();
   const auto divergence = validation_.divergence();
   ImGui::SameLine();
@@ -237,7 +238,9 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
     ImGui::Text("%s   frame %" PRIu64 "   recorded run  vs  %s%s", session_->name().c_str(),
                 session_->frame(), w.mover.name().c_str(),
                 w.updatesAsMoves ? " (updates treated as moves)" : "");
-    ImGui::TextColored(colour(pal::kRender), "%s", kOpenLoop);
+    ImGui::PushStyleColor(ImGuiCol_Text, pal::kRender);
+    ImGui::TextWrapped("%s", kOpenLoop);
+    ImGui::PopStyleColor();
     titleH = ImGui::GetWindowHeight();
   }
   ImGui::End();
@@ -449,7 +452,9 @@ void RecordingDebugger::drawWhatIfControls() {
   }
   ImGui::SameLine();
   if (ImGui::Button("Recorded run only") && whatIf_) whatIf_.reset();
-  ImGui::TextColored(colour(pal::kDim), "%s", kOpenLoop);
+  ImGui::PushStyleColor(ImGuiCol_Text, pal::kDim);
+  ImGui::TextWrapped("%s", kOpenLoop);
+  ImGui::PopStyleColor();
   ImGui::End();
 }
 

@@ -60,6 +60,15 @@ RecordingSession open(const Game& g) {
   return RecordingSession(Replay::fromBytes(g.bytes), "game.tvrec");
 }
 
+// The player's move in the frame on screen (frame 0 also holds the adds and labels).
+std::uint32_t moveCall(const RecordingSession& s) {
+  for (const CallInfo& c : s.calls()) {
+    if (c.kind == CallKind::move) return c.index;
+  }
+  ADD_FAILURE() << "no move in frame " << s.frame();
+  return 0;
+}
+
 TEST(RecordingSession, ShowsAFrameAsItEndedWithItsCallsListed) {
   const Game g = record(6);
   RecordingSession s = open(g);
@@ -83,7 +92,7 @@ TEST(RecordingSession, SelectingACallShowsTheWorldJustAfterItAndTracesItsItem) {
   const Game g = record(6);
   RecordingSession s = open(g);
   s.goTo(4);
-  s.selectCall(0);
+  s.selectCall(moveCall(s));
   ASSERT_TRUE(s.call());
   EXPECT_EQ(s.selected(), g.player);  // the call's item is traced
   const MoveTrace* t = s.callTrace();
@@ -104,7 +113,7 @@ TEST(RecordingSession, ACallsTraceIsTheOneTheGamesMoveMade) {
   RecordingSession s = open(g);
   for (std::uint64_t f = 0; f < 12; ++f) {
     s.goTo(f);
-    s.selectCall(0);
+    s.selectCall(moveCall(s));
     const MoveTrace* t = s.callTrace();
     ASSERT_NE(t, nullptr) << "frame " << f;
     const MoveTrace& live = g.live[f];
@@ -128,7 +137,8 @@ TEST(RecordingSession, TheTraceCarriesTheFiltersRecordedAnswers) {
   bool sawGhostIgnored = false, sawWallSlide = false;
   for (std::uint64_t f = 0; f < 12; ++f) {
     s.goTo(f);
-    s.selectCall(0);
+    s.selectCall(moveCall(s));
+    ASSERT_NE(s.callTrace(), nullptr);
     for (const TraceAnswer& a : s.callTrace()->answers) {
       sawGhostIgnored |= a.other == g.ghost && a.response == response::ignore;
       sawWallSlide |= a.other == g.wall && a.response == response::slide;

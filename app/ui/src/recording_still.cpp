@@ -47,6 +47,12 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
       if (k > 0xFFFFFFFEu) throw UsageError{"--call: " + std::to_string(k) + " is too large"};
       r.call = static_cast<std::uint32_t>(k);
       picked = "--call";
+    } else if (arg == "--what-if") {
+      r.whatIf = std::string(value(i, arg));
+      picked = "--what-if";
+    } else if (arg == "--updates-as-moves") {
+      r.updatesAsMoves = true;
+      picked = "--updates-as-moves";
     } else if (positional && arg.substr(0, 1) != "-" && endsWith(arg, ".tvrec")) {
       if (named) throw UsageError{"'" + std::string(arg) + "': one recording at a time"};
       r.path = arg;
@@ -105,6 +111,10 @@ Rect recordingView(const RecordingSession& s, const PictureOptions& o) {
 RecordingStill::RecordingStill(const RecordingFlags& r, const PictureOptions& o)
     : r_(r), o_(o), session_(openRecording(r.path)) {
   rejectSceneFlags(o);
+  if (r.whatIf || r.updatesAsMoves) {
+    throw UsageError{std::string(r.whatIf ? "--what-if" : "--updates-as-moves") +
+                     ": a what-if run is shown by tv-debugger (tv-replay --mover prints its report)"};
+  }
   (void)overlaysFor(o);  // a bad --hide/--show fails before anything is drawn
   if (session_.frames() == 0) throw UsageError{"--open " + r.path + ": the recording has no frames"};
   if (r.frame > session_.lastFrame()) {
