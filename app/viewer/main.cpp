@@ -125,6 +125,7 @@ int interactive(const ViewerOptions& o) {
   if (o.recording) {
     RecordingDebugger& r = debugger.openRecording(o.recording->path);
     r.show(o.recording->frame, o.recording->call, o.recording->item);
+    r.setView(o.picture);
     if (o.recording->whatIf) {
       MoverSpec m;
       try {

@@ -74,6 +74,21 @@ void RecordingDebugger::show(std::uint64_t f, std::optional<std::uint32_t> k,
   }
 }
 
+void RecordingDebugger::setView(const ui::PictureOptions& o) {
+  switch (o.view) {
+    case ui::ViewKind::scene:
+      frameAll();
+      break;
+    case ui::ViewKind::follow:
+      follow_ = true;
+      break;
+    case ui::ViewKind::rect:
+      follow_ = false;
+      state_.view.frameView = Rect{o.viewRect[0], o.viewRect[1], o.viewRect[2], o.viewRect[3]};
+      break;
+  }
+}
+
 bool RecordingDebugger::idle() const {
   return paused_ && !validation_.running() && !(whatIf_ && whatIf_->job.running());
 }

@@ -18,6 +18,7 @@
 #include "recording_jobs.hpp"
 #include "tv/mover.hpp"
 #include "tv/ui/overlays.hpp"
+#include "tv/ui/picture_options.hpp"
 #include "tv/ui/recording_session.hpp"
 #include "tv/ui/recording_view.hpp"
 
@@ -48,6 +49,8 @@ class RecordingDebugger {
   /// Shows frame `f`, call `k` of it, tracing `item` (the command line's --frame/--call/--item);
   /// UsageError naming the flag when the recording has no such thing.
   void show(std::uint64_t f, std::optional<std::uint32_t> k, const std::optional<std::string>& item);
+  /// Frames the view as --view asks: everything, the traced move (follow), or a world rect.
+  void setView(const ui::PictureOptions& o);
   /// Opens another recording in place; on failure keeps the current one and shows why.
   void reopen(const std::string& path);
   /// Starts a what-if run with `mover` (and its substep length), as the panel's Run does.

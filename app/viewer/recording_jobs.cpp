@@ -34,7 +34,7 @@ void ValidationJob::start(const std::string& path, bool wait) {
 }
 
 void ValidationJob::run(const std::string& path) {
-  std::optional<Divergence> d;
+  std::optional<tv::Divergence> d;
   std::string error;
   bool cancelled = false;
   try {
@@ -59,7 +59,7 @@ void ValidationJob::run(const std::string& path) {
   done_ = !cancelled;
 }
 
-std::optional<Divergence> ValidationJob::divergence() const {
+std::optional<tv::Divergence> ValidationJob::divergence() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return divergence_;
 }

@@ -16,6 +16,7 @@
 
 namespace tv::viewer {
 
+// tv::Divergence (a replay's) is named in full: tv::viewer::Divergence is the scene look-ahead.
 class ValidationJob {
  public:
   ValidationJob() = default;
@@ -32,7 +33,7 @@ class ValidationJob {
   /// Frames checked so far.
   [[nodiscard]] std::uint64_t progress() const { return progress_.load(); }
   /// The first divergence, once done (none: the replay matched the recording).
-  [[nodiscard]] std::optional<Divergence> divergence() const;
+  [[nodiscard]] std::optional<tv::Divergence> divergence() const;
   /// Why it could not run (a file that no longer opens), once done.
   [[nodiscard]] std::string error() const;
 
@@ -43,7 +44,7 @@ class ValidationJob {
   std::atomic<bool> running_{false}, done_{false}, cancel_{false};
   std::atomic<std::uint64_t> progress_{0};
   mutable std::mutex mutex_;
-  std::optional<Divergence> divergence_;
+  std::optional<tv::Divergence> divergence_;
   std::string error_;
 };
 
