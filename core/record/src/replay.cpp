@@ -230,6 +230,7 @@ void Replay::Impl::tally(const rec::Call& c, std::uint64_t f,
     case CallKind::move:
     case CallKind::moverMove: {
       ++summary.moves;
+      moving.insert(c.item);
       RecordedItem& r = items[itemFor(c.item, f)];
       ++r.moves;
       r.hits += c.collisions.size();
@@ -239,15 +240,19 @@ void Replay::Impl::tally(const rec::Call& c, std::uint64_t f,
     case CallKind::batchStep:
       summary.moves += c.bodies.size();
       for (const rec::BodyOut& b : c.bodies) {
+        moving.insert(b.item);
         RecordedItem& r = items[itemFor(b.item, f)];
         ++r.moves;
         r.hits += b.count;
         r.maxSpeed = std::max(r.maxSpeed, length(b.position - b.start.position()));
       }
       break;
+    case CallKind::update:
+      if (!(c.rect == c.start)) moving.insert(c.item);
+      itemFor(c.item, f);
+      break;
     case CallKind::add:
     case CallKind::remove:
-    case CallKind::update:
       itemFor(c.item, f);
       break;
     default:
