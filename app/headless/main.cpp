@@ -21,6 +21,7 @@
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/palette.hpp"
+#include "tv/ui/recording_still.hpp"
 #include "tv/ui/still.hpp"
 
 namespace tv::headless {
@@ -78,7 +79,9 @@ struct FrameTimes {
   double firstMs = 0.0;
 };
 
-FrameTimes renderImage(const Options& o, ui::Still& still) {
+// A scene's still or a recording's: both draw one picture the same way.
+template <class Still>
+FrameTimes renderImage(const Options& o, Still& still) {
   // A fresh context per image: window sizes, table widths and tree states never leak from one
   // picture into the next.
   IMGUI_CHECKVERSION();
@@ -124,8 +127,41 @@ FrameTimes renderImage(const Options& o, ui::Still& still) {
   return times;
 }
 
+void report(const Options& o, const std::string& path, const FrameTimes& t, double pngMs) {
+  std::cout << path << "\n";
+  if (o.timing) {
+    std::fprintf(stderr,
+                 "tv-render: %dx%d, %d frames: first %.1f ms, then %.2f ms per frame (%.2f ms "
+                 "building the UI, %.2f ms drawing it); PNG %.1f ms\n",
+                 o.width, o.height, o.frames, t.firstMs, t.meanMs, t.uiMs, t.meanMs - t.uiMs,
+                 pngMs);
+  }
+}
+
+// --open FILE: a recorded game at a frame (and call), as tv-debugger shows it.
+int renderRecording(const ui::RecordingFlags& r, const Options& o) {
+  ui::RecordingStill still(r, o);
+  OffscreenGl gl(o.width, o.height);
+  const FrameTimes t = renderImage(o, still);
+  const auto e0 = std::chrono::steady_clock::now();
+  std::string path = o.out ? *o.out : std::string();
+  if (path.empty()) {
+    const std::string name = still.session().name();
+    path = name.substr(0, name.rfind('.')) + "_{tick}.png";
+  }
+  for (std::size_t at; (at = path.find("{tick}")) != std::string::npos;)
+    path.replace(at, 6, std::to_string(r.frame));
+  writePng(path, o.width, o.height, gl.readRgb());
+  const double pngMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count();
+  report(o, path, t, pngMs);
+  return 0;
+}
+
 int run(int argc, char** argv) {
-  const Options o = parseOptions(argc, argv);
+  std::vector<char*> args;
+  const auto recording = ui::extractRecordingFlags(argc, argv, false, args);
+  const Options o = parseOptions(static_cast<int>(args.size()), args.data());
   if (o.help) {
     std::cout << kUsage;
     return 0;
@@ -134,6 +170,7 @@ int run(int argc, char** argv) {
     printList();
     return 0;
   }
+  if (recording) return renderRecording(*recording, o);
   ui::Still still(o);
   OffscreenGl gl(o.width, o.height);
   for (const std::uint64_t tick : o.ticks) {
@@ -144,14 +181,7 @@ int run(int argc, char** argv) {
     writePng(path, o.width, o.height, gl.readRgb());
     const double pngMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count();
-    std::cout << path << "\n";
-    if (o.timing) {
-      std::fprintf(stderr,
-                   "tv-render: %dx%d, %d frames: first %.1f ms, then %.2f ms per frame (%.2f ms "
-                   "building the UI, %.2f ms drawing it); PNG %.1f ms\n",
-                   o.width, o.height, o.frames, t.firstMs, t.meanMs, t.uiMs, t.meanMs - t.uiMs,
-                   pngMs);
-    }
+    report(o, path, t, pngMs);
   }
   return 0;
 }

@@ -9,6 +9,8 @@ const char* const kUsage =
     "                 [--render-hz R] [--hide a,b] [--show a,b] [--frames K] [--timing]\n"
     "                 [--caption TEXT]\n"
     "                 [--PARAM VALUE ...]\n"
+    "       tv-render --open GAME.tvrec [--frame N] [--call K] [--item LABEL] [--size WxH]\n"
+    "                 [--out FILE.png] [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b]\n"
     "       tv-render --list\n"
     "\n"
     "Renders the debugger's picture of a scene at a tick into a PNG, without a display (OSMesa).\n"
@@ -37,6 +39,14 @@ const char* const kUsage =
     "                   --speed --size --tile --dt --substep --offset ... (as in tv-run, tv-bench\n"
     "                   and the debugger's panel)\n"
     "  --list           scenes and movers with their one-line descriptions\n"
+    "A recording (written by tv::Recorder) instead of a scene:\n"
+    "  --open FILE      the recording; its picture is tv-debugger's (tv-debugger FILE)\n"
+    "  --frame N        the frame to show, as it ended (default 0)\n"
+    "  --call K         call K of the frame selected: the world just after it, its trace drawn\n"
+    "                   and inspected (default: none, the frame's end)\n"
+    "  --item LABEL     the recorded item traced (its moves over the last frames)\n"
+    "                   --view scene frames the whole world; follow, the traced move.\n"
+    "                   Default --out: <file>_<frame>.png\n"
     "Exit status: 0 done, 1 rendering failed, 2 bad command line.\n";
 
 }  // namespace tv::headless

@@ -3,20 +3,33 @@
 # rewrites screenshots/README.md from the same list, so the pictures, their captions and the
 # tests (tests/app) never disagree.
 #
-#   app/headless/regenerate_goldens.sh [path/to/tv-render]
+#   app/headless/regenerate_goldens.sh [path/to/tv-render]    (EXAMPLE=path/to/the example game)
 #   cmake --build build/release --target tv-goldens        # the same, through CMake
 #
 # The goldens are pinned to Debian 12's Mesa (llvmpipe): render them there.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-render="${1:-$root/build/release/app/headless/tv-render}"
+render="$(realpath -m "${1:-$root/build/release/app/headless/tv-render}")"
 list="$root/screenshots/goldens.txt"
 readme="$root/screenshots/README.md"
 
 if [[ ! -x "$render" ]]; then
   echo "regenerate_goldens.sh: no tv-render at '$render' (build it, or pass its path)" >&2
   exit 2
+fi
+
+# Lines that open sample.tvrec show a recording: the example platformer's first 240 frames,
+# recorded afresh into a scratch folder the pictures are rendered from (as tests/app does).
+example="${EXAMPLE:-$root/build/release/app/examples/tv-example-platformer}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+if grep -v '^#' "$list" | grep -q 'sample\.tvrec'; then
+  if [[ ! -x "$example" ]]; then
+    echo "$(basename "$0"): no tv-example-platformer at '$example' (build it, or set EXAMPLE)" >&2
+    exit 2
+  fi
+  "$example" --frames 240 --record "$work/sample.tvrec" > /dev/null
 fi
 
 # Same environment as the tests: no shader cache on disk, the default llvmpipe driver.
@@ -46,7 +59,7 @@ while IFS= read -r line; do
   args="$(echo "$args" | xargs)"
   caption="$(echo "$caption" | sed 's/^ *//; s/ *$//')"
   # shellcheck disable=SC2086  # the arguments are words by design
-  "$render" $args --out "$root/screenshots/$name.png" > /dev/null
+  (cd "$work" && "$render" $args --out "$root/screenshots/$name.png" > /dev/null)
   {
     echo
     echo "## $name"

@@ -429,4 +429,26 @@ void Debugger::run(Command c) {
   }
 }
 
+// -- recordings ------------------------------------------------------------------------------
+
+RecordingDebugger& Debugger::openRecording(const std::string& path) {
+  if (recording_) {
+    recording_->reopen(path);
+  } else {
+    ui::Overlays overlays = states_[0].overlays;
+    overlays.positions = false;  // no render rate in a recording: the three positions coincide
+    recording_ = std::make_unique<RecordingDebugger>(path, overlays, pinned_);
+  }
+  return *recording_;
+}
+
+void Debugger::tryOpenRecording(const std::string& path) {
+  try {
+    (void)openRecording(path);
+    message_.clear();
+  } catch (const std::exception& e) {
+    reportError(e.what());
+  }
+}
+
 }  // namespace tv::viewer

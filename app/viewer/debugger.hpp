@@ -19,6 +19,7 @@
 #include "divergence.hpp"
 #include "gl_window.hpp"
 #include "options.hpp"
+#include "recording_debugger.hpp"
 #include "settings.hpp"
 #include "shortcuts.hpp"
 #include "substep_sweep.hpp"
@@ -39,7 +40,9 @@ class Debugger {
   /// One frame (between ImGui::NewFrame and ImGui::Render): input, time, then every window.
   /// `seconds` of wall time passed since the last frame.
   void frame(double seconds, std::span<const KeyPress> keys);
-  [[nodiscard]] bool wantsQuit() const { return quit_; }
+  [[nodiscard]] bool wantsQuit() const {
+    return quit_ || (recording_ && recording_->wantsQuit());
+  }
   /// Puts what should survive a restart into `s`.
   void store(Settings& s) const;
   /// Freezes anything that reads a clock out of the picture (screenshots).
@@ -53,6 +56,10 @@ class Debugger {
   /// Applies a max substep length picked in the substep sweep: to every substep mover through
   /// the parameter; without one, a comparison gains a substep panel and keeps its others.
   void useSubstepLength(double length);
+  /// Shows a recording instead of the scenes (recording_debugger.hpp); tv::Error for a file
+  /// that does not open. `tryOpenRecording` shows the error instead (a dropped file).
+  RecordingDebugger& openRecording(const std::string& path);
+  void tryOpenRecording(const std::string& path);
 
   // Read-only views of the state, for tests and for whatever is drawn beside the debugger.
   [[nodiscard]] const std::vector<ui::DebuggerState>& panels() const { return states_; }
@@ -66,6 +73,7 @@ class Debugger {
 
   /// Paused with nothing computing in the background: the window may wait for input.
   [[nodiscard]] bool idle() const {
+    if (recording_) return recording_->idle();
     return paused_ && divergence_.done() && (!showSweep_ || sweep_.pending() == 0);
   }
 
@@ -126,6 +134,10 @@ class Debugger {
 
   Divergence divergence_;
   SubstepSweep sweep_;
+
+  // A recording, when one is open, takes over the window (recording_debugger.cpp).
+  std::unique_ptr<RecordingDebugger> recording_;
+  OpenRecordingDialog recordingDialog_;
 };
 
 }  // namespace tv::viewer

@@ -47,6 +47,13 @@ bool menuItem(const char* label, Command c, bool selected = false, bool enabled 
 // [SECTION] the frame ------------------------------------------------------------------------
 
 void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
+  if (recording_) {
+    recording_->frame(seconds, keys);
+    if (!recording_->wantsClose()) return;
+    states_[0].overlays = recording_->overlays();
+    recording_.reset();
+    return;
+  }
   // Smoothed over ~10 frames, so the readout is steady enough to read. A frame that waited for
   // input (idle, paused) measures the wait, not the work: left out.
   if (!waited_)
@@ -86,6 +93,7 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   }
   if (showSweep_) drawSweep();
   drawPicker();
+  if (const auto path = recordingDialog_.draw()) tryOpenRecording(*path);
 }
 
 // [SECTION] keys -----------------------------------------------------------------------------
@@ -175,6 +183,7 @@ float Debugger::drawMenuBar() {
   };
   if (ImGui::BeginMenu("File")) {
     item("Open scene...", Command::openScene);
+    if (ImGui::MenuItem("Open recording...")) recordingDialog_.open();
     item("Restart", Command::restart);
     ImGui::Separator();
     item("Quit", Command::quit);

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "debugger.hpp"
@@ -13,9 +14,11 @@
 #include "imgui.h"
 #include "options.hpp"
 #include "settings.hpp"
+#include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/palette.hpp"
+#include "tv/ui/recording_still.hpp"
 #include "tv/ui/still.hpp"
 
 namespace tv::viewer {
@@ -68,18 +71,33 @@ void scaleUi(float scale) {
 // Smoke mode: tv-render's picture, through GLFW and GLX.
 int screenshot(const ViewerOptions& o) {
   const ui::PictureOptions& p = o.picture;
-  ui::Still still(p);
-  still.advanceTo(p.ticks.front());
+  // A scene's still, or a recording's (tv-render --open).
+  std::optional<ui::Still> still;
+  std::optional<ui::RecordingStill> recorded;
+  if (o.recording) {
+    recorded.emplace(*o.recording, p);
+  } else {
+    still.emplace(p);
+    still->advanceTo(p.ticks.front());
+  }
   GlWindow window({p.width, p.height, "Tunnelvision", true});
   checkSize(window, p.width, p.height);
   ImGui::GetIO().DisplaySize = {static_cast<float>(p.width), static_cast<float>(p.height)};
   scaleUi(1.0f);
-  still.beginImage();
+  if (recorded) {
+    recorded->beginImage();
+  } else {
+    still->beginImage();
+  }
   for (int f = 0; f < p.frames; ++f) {
     window.beginFrame();
     pinInput();
     ImGui::NewFrame();
-    still.drawFrame(ImGui::GetIO().DisplaySize);
+    if (recorded) {
+      recorded->drawFrame(ImGui::GetIO().DisplaySize);
+    } else {
+      still->drawFrame(ImGui::GetIO().DisplaySize);
+    }
     ImGui::Render();
     window.render(ui::palette::kBackground);
     if (f + 1 == p.frames) {
@@ -114,6 +132,23 @@ int interactive(const ViewerOptions& o) {
   Debugger debugger(opening, loaded ? &settings : nullptr);
   if (!loaded && !shot) debugger.openHelp();  // the first run opens Help
 
+  // A recording opens before the window does, so a bad file or flag fails without a display.
+  debugger.setPinned(shot);
+  if (o.recording) {
+    RecordingDebugger& r = debugger.openRecording(o.recording->path);
+    r.show(o.recording->frame, o.recording->call, o.recording->item);
+    r.setView(o.picture);
+    if (o.recording->whatIf) {
+      MoverSpec m;
+      try {
+        m = parseMover(*o.recording->whatIf);
+      } catch (const Error& e) {
+        throw ui::UsageError{std::string("--what-if: ") + e.what()};
+      }
+      r.startWhatIf(m, o.recording->updatesAsMoves);
+    }
+    if (!loaded && !shot) r.openHelp();
+  }
   WindowConfig config{o.picture.width, o.picture.height, "Tunnelvision debugger", shot};
   if (loaded && !o.picture.windowGiven) {
     config.width =
@@ -128,6 +163,7 @@ int interactive(const ViewerOptions& o) {
   scaleUi(scale);
   debugger.setPinned(shot);
 
+
   auto last = std::chrono::steady_clock::now();
   for (int f = 0; !window.shouldClose() && !debugger.wantsQuit(); ++f) {
     window.beginFrame(!shot && debugger.idle());
@@ -138,6 +174,7 @@ int interactive(const ViewerOptions& o) {
       pinInput();
       seconds = 0.0;
     }
+    for (const std::string& dropped : window.takeDrops()) debugger.tryOpenRecording(dropped);
     ImGui::NewFrame();
     debugger.frame(std::min(seconds, 0.25), window.takeKeys());
     ImGui::Render();

@@ -13,6 +13,9 @@ const char* const kUsage =
     "                   [--render-hz R] [--hide a,b] [--show a,b] [--PARAM VALUE ...]\n"
     "                   [--overlay] [--sweep] [--ui-scale S] [--no-settings]\n"
     "                   [--frames K --screenshot FILE.png | --app-screenshot FILE.png]\n"
+    "       tv-debugger GAME.tvrec [--frame N] [--call K] [--item LABEL] [--size WxH]\n"
+    "                   [--what-if MOVER [--updates-as-moves]]\n"
+    "                   [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b] [...as above]\n"
     "\n"
     "The interactive debugger: a window (GLFW, OpenGL 3.3) showing a scene frame by frame, what\n"
     "each move visited and hit, with time controls, live tuning and mover comparisons. Press F1\n"
@@ -28,8 +31,20 @@ const char* const kUsage =
     "                   of the scene at the tick, write it to F and exit; tv-render given the\n"
     "                   same flags writes the same pixels\n"
     "  --app-screenshot F  the same, of the whole debugger window\n"
-    "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
-    "values) live in\n"
+    "A recording (GAME.tvrec, written by tv::Recorder; or File > Open recording..., or drop the
+"
+    "file on the window) opens at frame N (default 0), with call K of it selected and the item
+"
+    "labelled LABEL traced; --screenshot then writes tv-render --open's picture of it.
+"
+    "  --what-if MOVER  re-run the recording with MOVER beside the recorded run (What-if menu)
+"
+    "  --updates-as-moves  in that run, an update that only moves an item is made a move
+"
+    "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter
+"
+    "values) live in
+"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
     "Exit status: 0 done, 1 failed (no display, GL), 2 bad command line.\n";
 
@@ -50,7 +65,12 @@ double parseScale(std::string_view text) {
 
 ViewerOptions parseViewerOptions(int argc, char** argv) {
   ViewerOptions o;
-  // The debugger's own flags come out first; the rest is the picture's command line.
+  // A recording's flags come out first, then the debugger's own; the rest is the picture's
+  // command line.
+  std::vector<char*> args;
+  o.recording = ui::extractRecordingFlags(argc, argv, true, args);
+  argc = static_cast<int>(args.size());
+  argv = args.data();
   std::vector<char*> rest = {argv[0]};
   const auto value = [&](int& i, std::string_view flag) -> std::string {
     if (i + 1 >= argc || std::string_view(argv[i + 1]).substr(0, 2) == "--") {
@@ -82,6 +102,7 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
   if (o.picture.ticks.size() > 1) {
     throw ui::UsageError{"--ticks: tv-debugger opens at one tick; give --tick N"};
   }
+  if (o.recording) ui::rejectSceneFlags(o.picture);
   if (o.screenshot && o.appScreenshot) {
     throw ui::UsageError{"--screenshot: give either --screenshot or --app-screenshot"};
   }

@@ -7,11 +7,14 @@
 #include <string>
 
 #include "tv/ui/picture_options.hpp"
+#include "tv/ui/recording_still.hpp"
 
 namespace tv::viewer {
 
 struct ViewerOptions {
   ui::PictureOptions picture;
+  /// A recording to open (tv-debugger FILE.tvrec [--frame N] [--call K] [--item LABEL]).
+  std::optional<ui::RecordingFlags> recording;
   /// Smoke mode: render `picture.frames` frames, write tv-render's picture of the scene at the
   /// tick to this PNG and exit.
   std::optional<std::string> screenshot;

@@ -3,11 +3,11 @@
 # tv-debugger --app-screenshot under a virtual X server, and rewrites screenshots/DEBUGGER.md
 # from the same list.
 #
-#   app/viewer/regenerate_screenshots.sh [path/to/tv-debugger]
+#   app/viewer/regenerate_screenshots.sh [path/to/tv-debugger]  (EXAMPLE=path/to/the example game)
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-debugger="${1:-$root/build/release/app/viewer/tv-debugger}"
+debugger="$(realpath -m "${1:-$root/build/release/app/viewer/tv-debugger}")"
 list="$root/screenshots/debugger.txt"
 page="$root/screenshots/DEBUGGER.md"
 
@@ -17,6 +17,18 @@ if [[ ! -x "$debugger" ]]; then
 fi
 command -v xvfb-run >/dev/null || { echo "regenerate_screenshots.sh: needs xvfb-run (apt-get install xvfb xauth)" >&2; exit 2; }
 export MESA_SHADER_CACHE_DISABLE=true
+# Lines that open sample.tvrec show a recording: the example platformer's first 240 frames,
+# recorded afresh into a scratch folder the pictures are rendered from (as tests/app does).
+example="${EXAMPLE:-$root/build/release/app/examples/tv-example-platformer}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+if grep -v '^#' "$list" | grep -q 'sample\.tvrec'; then
+  if [[ ! -x "$example" ]]; then
+    echo "$(basename "$0"): no tv-example-platformer at '$example' (build it, or set EXAMPLE)" >&2
+    exit 2
+  fi
+  "$example" --frames 240 --record "$work/sample.tvrec" > /dev/null
+fi
 
 {
   echo "# Debugger screenshots"
@@ -35,8 +47,8 @@ while IFS= read -r line; do
   args="$(echo "$args" | xargs)"
   caption="$(echo "$caption" | sed 's/^ *//; s/ *$//')"
   # shellcheck disable=SC2086  # the arguments are words by design
-  xvfb-run -a -s "-screen 0 1280x720x24" "$debugger" $args --no-settings \
-    --app-screenshot "$root/screenshots/$name.png" > /dev/null
+  (cd "$work" && xvfb-run -a -s "-screen 0 1280x720x24" "$debugger" $args --no-settings \
+    --app-screenshot "$root/screenshots/$name.png" > /dev/null)
   {
     echo
     echo "## $name"

@@ -55,14 +55,15 @@ std::optional<std::uint64_t> timelineBar(const char* id, std::uint64_t current, 
   if (ImGui::IsItemHovered()) {
     const std::uint64_t t = tickAt(io.MousePos.x);
     ImGui::BeginTooltip();
-    ImGui::Text("tick %" PRIu64, t);
+    ImGui::Text("%s %" PRIu64, marks.unit, t);
     if (marks.failure) {
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kBad), "tick %" PRIu64 ": %s",
-                         *marks.failure, marks.failureText.c_str());
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kBad), "%s %" PRIu64 ": %s",
+                         marks.unit, *marks.failure, marks.failureText.c_str());
     }
     if (marks.difference) {
       ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kRender),
-                         "tick %" PRIu64 ": the movers' states first differ", *marks.difference);
+                         "%s %" PRIu64 ": the movers' states first differ", marks.unit,
+                         *marks.difference);
     }
     ImGui::EndTooltip();
   }

@@ -16,6 +16,7 @@ struct TimelineMarks {
   std::optional<std::uint64_t> failure;     ///< first tick one failed (tunnelled...)
   std::string failureText;
   std::uint64_t known = 0;  ///< ticks the look-ahead has covered
+  const char* unit = "tick";  ///< what a step of the bar is called ("frame" for recordings)
 };
 
 /// The bar, `width` x one frame height, covering ticks [0, last]. Returns the tick clicked or

@@ -168,6 +168,7 @@ MoveResult Mover::discrete(World& world, ItemId id, Vec2 goal, Filter filter, Mo
   for (const ItemId other : overlapping_) {
     if (trace) trace->candidates.push_back(other);
     const ResponseId resp = filter(id, other);
+    if (trace) trace->answers.push_back({other, resp});
     if (resp == response::ignore) continue;
     (void)world.responseName(resp);  // throws on an answer that is not a registered response
     const Rect o = world.rect(other);
@@ -286,6 +287,7 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
     for (const ItemId other : overlapping_) {
       if (trace) trace->candidates.push_back(other);
       const ResponseId resp = filter(id, other);
+      if (trace) trace->answers.push_back({other, resp});
       if (resp == response::ignore) continue;
       (void)world.responseName(resp);  // throws on an answer that is not a registered response
       Collision c;

@@ -448,6 +448,7 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
                        return;
                      }
                      const ResponseId resp = filter(selfId, otherId);
+                     if (trace) trace->answers.push_back({otherId, resp});
                      if (resp == response::ignore) return;
                      if (resp >= responses_.size()) {
                        fail(kMove, "filter returned response " + std::to_string(resp) +

@@ -74,5 +74,37 @@ TEST(Trace, SubstepMoversRecordTheirPieceBoundaries) {
   EXPECT_EQ(t.final, w.rect(m).position());
 }
 
+// The filter is user code: the trace keeps each answer it gave, so the debugger can show why a
+// candidate was passed through. A mover heading right through a ghost into a wall:
+//
+//   [m] ---->  |ghost|  |wall|
+//   0..8       12..16   20..36
+TEST(Trace, RecordsTheFiltersAnswers) {
+  if constexpr (!kTraceCompiledIn) GTEST_SKIP() << "tracing compiled out";
+  for (const std::string_view name : moverNames()) {
+    World w(16);
+    const ItemId ghost = w.add({12, -20, 4, 60});
+    const ItemId wall = w.add({20, -20, 16, 60});
+    const ItemId m = w.add({0, 0, 8, 8});
+    Mover mover(parseMover(name));
+    MoveTrace t;
+    (void)mover.move(w, m, {30, 0}, [&](ItemId, ItemId other) {
+      return other == ghost ? response::ignore : response::slide;
+    }, &t);
+    bool ignoredGhost = false, slidWall = false;
+    for (const TraceAnswer& a : t.answers) {
+      ignoredGhost |= a.other == ghost && a.response == response::ignore;
+      slidWall |= a.other == wall && a.response == response::slide;
+    }
+    // discrete teleports past both and is asked about what it overlaps at the goal (the wall).
+    if (name != "discrete") {
+      EXPECT_TRUE(ignoredGhost) << name;
+    }
+    EXPECT_TRUE(slidWall) << name;
+    t.clear();
+    EXPECT_TRUE(t.answers.empty());
+  }
+}
+
 }  // namespace
 }  // namespace tv

@@ -27,6 +27,13 @@ struct TraceLeg {
   Vec2 goal;
 };
 
+/// The filter's answer for one pair it was asked about. Only items the move could meet are
+/// asked (in a swept move, those that would be hit first), so a candidate may have no answer.
+struct TraceAnswer {
+  ItemId other;
+  ResponseId response = response::slide;
+};
+
 struct MoveTrace {
   ItemId item;
   std::string_view mover;          ///< name of the mover that made the move
@@ -38,6 +45,7 @@ struct MoveTrace {
   std::vector<TraceLeg> legs;      ///< swept legs, in order (responses start new legs)
   std::vector<Vec2> substeps;      ///< substep boundaries (positions asked for), substep movers
   std::vector<Collision> hits;     ///< collisions, in the order the responses ran
+  std::vector<TraceAnswer> answers;  ///< the filter's answers, in the order it gave them
 
   void clear() {
     item = {};
@@ -49,6 +57,7 @@ struct MoveTrace {
     legs.clear();
     substeps.clear();
     hits.clear();
+    answers.clear();
   }
 };
 

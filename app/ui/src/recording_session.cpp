@@ -1,0 +1,178 @@
+#include "tv/ui/recording_session.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace tv::ui {
+
+bool tracesAMove(CallKind k) {
+  return k == CallKind::move || k == CallKind::check || k == CallKind::project ||
+         k == CallKind::moverMove;
+}
+
+RecordingSession::RecordingSession(Replay replay, std::string name)
+    : replay_(std::move(replay)), name_(std::move(name)) {
+  const auto items = replay_.items();
+  for (std::size_t i = 0; i < items.size(); ++i) recorded_.emplace(items[i].id, i);
+  goTo(0);
+}
+
+std::uint64_t RecordingSession::lastFrame() const {
+  const std::uint64_t n = replay_.frames();
+  return n > 0 ? n - 1 : 0;
+}
+
+void RecordingSession::goTo(std::uint64_t f) {
+  frame_ = std::min(f, lastFrame());
+  call_.reset();
+  calls_ = replay_.frames() > 0 ? replay_.calls(frame_) : std::vector<CallInfo>{};
+  rebuild();
+}
+
+void RecordingSession::selectCall(std::optional<std::uint32_t> k) {
+  if (k && *k >= calls_.size()) return;
+  call_ = k;
+  // The call's item becomes the traced one, so its earlier moves trail behind the call's.
+  if (k && calls_[*k].item.valid()) selected_ = calls_[*k].item;
+  rebuild();
+}
+
+void RecordingSession::select(std::optional<ItemId> item) {
+  selected_ = item;
+  rebuild();
+}
+
+void RecordingSession::rebuild() {
+  moves_.clear();
+  callTraced_ = false;
+  divergence_.reset();
+  if (replay_.frames() == 0) return;
+  const std::uint64_t from = frame_ > history_ ? frame_ - history_ : 0;
+  for (std::uint64_t f = from; f <= frame_; ++f) {
+    const std::vector<CallInfo> here = f == frame_ ? calls_ : replay_.calls(f);
+    const std::size_t end = f == frame_ && call_ ? *call_ + 1 : here.size();
+    // Stepping a frame's last call leaves the replay at the next frame's start (or at the end
+    // of the one it stepped): either is the same world, but only the first can be stepped on.
+    if (replay_.frame() != f || replay_.call() != 0) replay_.seek(f, 0);
+    for (std::size_t k = 0; k < end; ++k) {
+      const CallInfo& c = here[k];
+      const bool isCall = f == frame_ && call_ && k == *call_;
+      const bool traced =
+          tracesAMove(c.kind) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
+      MoveTrace t;
+      std::optional<Divergence> d = replay_.step(traced ? &t : nullptr);
+      if (d && !divergence_) divergence_ = std::move(d);
+      if (traced) {
+        moves_.push_back({f, std::move(t)});
+        callTraced_ = isCall;
+      }
+    }
+  }
+  // Older moves than the history keeps are dropped from the front.
+  constexpr std::size_t kKeep = 16;
+  if (moves_.size() > kKeep)
+    moves_.erase(moves_.begin(), moves_.end() - static_cast<std::ptrdiff_t>(kKeep));
+}
+
+const MoveTrace* RecordingSession::callTrace() const {
+  return callTraced_ && !moves_.empty() ? &moves_.back().trace : nullptr;
+}
+
+std::optional<ItemId> RecordingSession::findLabel(std::string_view label) const {
+  for (const RecordedItem& i : replay_.items()) {
+    if (i.label == label) return i.id;
+  }
+  return std::nullopt;
+}
+
+bool RecordingSession::moves(ItemId id) const {
+  const auto at = recorded_.find(id);
+  return at != recorded_.end() && replay_.items()[at->second].moves > 0;
+}
+
+std::optional<ItemId> RecordingSession::itemAt(Vec2 p) const {
+  std::optional<ItemId> best;
+  bool bestMoves = false;
+  double bestArea = std::numeric_limits<double>::infinity();
+  world().forEachItem([&](ItemId id, const Rect& r) {
+    if (!contains(r, p)) return;
+    const bool m = moves(id);
+    const double area = r.w * r.h;
+    if (!best || (m && !bestMoves) || (m == bestMoves && area < bestArea)) {
+      best = id;
+      bestMoves = m;
+      bestArea = area;
+    }
+  });
+  return best;
+}
+
+WorldPicture RecordingSession::picture() {
+  solids_.clear();
+  bodies_.clear();
+  std::optional<std::size_t> selectedBody;
+  world().forEachItem([&](ItemId id, const Rect& r) {
+    const bool isSelected = selected_ && *selected_ == id;
+    if (moves(id) || isSelected) {
+      if (isSelected) selectedBody = bodies_.size();
+      sim::Body b;
+      b.item = id;
+      b.rect = r;
+      bodies_.push_back(b);
+    } else {
+      solids_.push_back({r, 0});
+    }
+  });
+  WorldPicture p;
+  p.world = &world();
+  p.solids = solids_;
+  p.bodies = bodies_;
+  p.selected = selectedBody;
+  p.moves = moves_;
+  return p;
+}
+
+Rect RecordingSession::bounds() const {
+  std::optional<Rect> box;
+  world().forEachItem([&](ItemId, const Rect& r) { box = box ? unite(*box, r) : r; });
+  if (!box) return {0, 0, 256, 256};
+  const double pad = std::max({box->w, box->h, 1.0}) * 0.05;
+  return {box->x - pad, box->y - pad, box->w + 2 * pad, box->h + 2 * pad};
+}
+
+double RecordingSession::typicalSize() const {
+  double best = std::numeric_limits<double>::infinity();
+  world().forEachItem([&](ItemId id, const Rect& r) {
+    if (moves(id)) best = std::min({best, r.w, r.h});
+  });
+  if (best == std::numeric_limits<double>::infinity()) {
+    world().forEachItem([&](ItemId, const Rect& r) { best = std::min({best, r.w, r.h}); });
+  }
+  return best == std::numeric_limits<double>::infinity() ? 16.0 : best;
+}
+
+Rect RecordingSession::followView(double minSide) const {
+  Rect box;
+  if (!moves_.empty()) {
+    // The last move only: earlier ones trail off the edge rather than shrink the action.
+    const MoveTrace& t = moves_.back().trace;
+    box = unite(t.start, t.start.at(t.goal));
+    box = unite(box, t.start.at(t.final));
+    for (const Collision& c : t.hits) box = unite(box, c.otherRect);
+  } else if (selected_ && world().has(*selected_)) {
+    box = world().rect(*selected_);
+  } else {
+    return bounds();
+  }
+  const double pad = std::max(box.w, box.h) * 0.25;
+  box = {box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad};
+  const Vec2 c = box.center();
+  const double w = std::max(box.w, minSide), h = std::max(box.h, minSide);
+  return {c.x - w * 0.5, c.y - h * 0.5, w, h};
+}
+
+std::string RecordingSession::describe(ItemId id) const {
+  return replay_.label(id);
+}
+
+}  // namespace tv::ui

@@ -1,0 +1,128 @@
+#include "recording_jobs.hpp"
+
+#include <exception>
+
+namespace tv::viewer {
+
+// -- validation --------------------------------------------------------------------------------
+
+ValidationJob::~ValidationJob() {
+  stop();
+}
+
+void ValidationJob::stop() {
+  cancel_ = true;
+  if (thread_.joinable()) thread_.join();
+  cancel_ = false;
+}
+
+void ValidationJob::start(const std::string& path, bool wait) {
+  stop();
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    divergence_.reset();
+    error_.clear();
+  }
+  progress_ = 0;
+  done_ = false;
+  running_ = true;
+  if (wait) {
+    run(path);
+  } else {
+    thread_ = std::thread([this, path] { run(path); });
+  }
+}
+
+void ValidationJob::run(const std::string& path) {
+  std::optional<tv::Divergence> d;
+  std::string error;
+  bool cancelled = false;
+  try {
+    ReplayOptions o;
+    o.tolerant = true;
+    Replay replay = Replay::open(path, o);
+    d = replay.validate([this](std::uint64_t frame) {
+      progress_ = frame;
+      return !cancel_.load();
+    });
+    cancelled = replay.cancelled();
+    if (!cancelled) progress_ = replay.frames();
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    divergence_ = std::move(d);
+    error_ = std::move(error);
+  }
+  running_ = false;
+  done_ = !cancelled;
+}
+
+std::optional<tv::Divergence> ValidationJob::divergence() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return divergence_;
+}
+
+std::string ValidationJob::error() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return error_;
+}
+
+// -- what-if -----------------------------------------------------------------------------------
+
+WhatIfJob::~WhatIfJob() {
+  join();
+}
+
+void WhatIfJob::join() {
+  // Replay::whatIf cannot be cancelled: a run started is waited for (it replays without
+  // tracing, about a million moves a second).
+  if (thread_.joinable()) thread_.join();
+}
+
+void WhatIfJob::start(const std::string& path, const ReplayOptions& options, double farAway,
+                      bool wait) {
+  join();
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    report_.reset();
+    error_.clear();
+  }
+  done_ = false;
+  running_ = true;
+  auto work = [this, path, options, farAway] {
+    std::optional<WhatIfReport> report;
+    std::string error;
+    try {
+      Replay replay = Replay::open(path, options);
+      report = replay.whatIf(farAway);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      report_ = std::move(report);
+      error_ = std::move(error);
+    }
+    running_ = false;
+    done_ = true;
+  };
+  if (wait) {
+    work();
+  } else {
+    thread_ = std::thread(work);
+  }
+}
+
+std::optional<WhatIfReport> WhatIfJob::report() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return report_;
+}
+
+std::string WhatIfJob::error() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return error_;
+}
+
+}  // namespace tv::viewer

@@ -1,0 +1,76 @@
+#pragma once
+// Whole-recording checks that run beside the view, each on its own Replay in its own thread,
+// so playback goes on while they work: validation (the first divergence, with progress) and a
+// what-if run under another mover (the report). Screenshots run them to the end first, so the
+// marks never depend on how fast the machine is.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "tv/record/replay.hpp"
+
+namespace tv::viewer {
+
+// tv::Divergence (a replay's) is named in full: tv::viewer::Divergence is the scene look-ahead.
+class ValidationJob {
+ public:
+  ValidationJob() = default;
+  ~ValidationJob();
+  ValidationJob(const ValidationJob&) = delete;
+  ValidationJob& operator=(const ValidationJob&) = delete;
+
+  /// Validates the file at `path` from the start (stops any run before). `wait`: in this thread.
+  void start(const std::string& path, bool wait);
+  void stop();
+
+  [[nodiscard]] bool running() const { return running_.load(); }
+  [[nodiscard]] bool done() const { return done_.load(); }
+  /// Frames checked so far.
+  [[nodiscard]] std::uint64_t progress() const { return progress_.load(); }
+  /// The first divergence, once done (none: the replay matched the recording).
+  [[nodiscard]] std::optional<tv::Divergence> divergence() const;
+  /// Why it could not run (a file that no longer opens), once done.
+  [[nodiscard]] std::string error() const;
+
+ private:
+  void run(const std::string& path);
+
+  std::thread thread_;
+  std::atomic<bool> running_{false}, done_{false}, cancel_{false};
+  std::atomic<std::uint64_t> progress_{0};
+  mutable std::mutex mutex_;
+  std::optional<tv::Divergence> divergence_;
+  std::string error_;
+};
+
+class WhatIfJob {
+ public:
+  WhatIfJob() = default;
+  ~WhatIfJob();
+  WhatIfJob(const WhatIfJob&) = delete;
+  WhatIfJob& operator=(const WhatIfJob&) = delete;
+
+  /// Re-runs the file at `path` with `options.mover`, comparing with the recording.
+  void start(const std::string& path, const ReplayOptions& options, double farAway, bool wait);
+  [[nodiscard]] bool running() const { return running_.load(); }
+  [[nodiscard]] bool done() const { return done_.load(); }
+  /// The report, once done.
+  [[nodiscard]] std::optional<WhatIfReport> report() const;
+  [[nodiscard]] std::string error() const;
+
+ private:
+  void join();
+
+  std::thread thread_;
+  std::atomic<bool> running_{false}, done_{false};
+  mutable std::mutex mutex_;
+  std::optional<WhatIfReport> report_;
+  std::string error_;
+};
+
+}  // namespace tv::viewer
