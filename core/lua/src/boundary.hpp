@@ -34,9 +34,9 @@ int guarded(lua_State* L) {
   return lua_error(L);
 }
 
-/// What a value is, for error messages: "-1", "nil", "'abc'", "table: 0x5581..." (tostring
-/// with strings quoted).
-inline const char* describe(lua_State* L, int idx) {
+/// What a value is, for error messages: "-1", "nil", "'abc'", "table: 0x5581..." (tostring,
+/// with strings quoted unless `quote` is false, as bump prints items).
+inline const char* describe(lua_State* L, int idx, bool quote = true) {
   idx = idx < 0 && idx > LUA_REGISTRYINDEX ? lua_gettop(L) + idx + 1 : idx;
   switch (lua_type(L, idx)) {
     case LUA_TNONE:
@@ -44,13 +44,15 @@ inline const char* describe(lua_State* L, int idx) {
       return "nil";
     case LUA_TNUMBER:
       {
-        char buf[64];  // as Lua's tostring prints it
-        std::snprintf(buf, sizeof buf, "%.14g", lua_tonumber(L, idx));
+        char buf[64];  // as Lua's tostring prints it, but one spelling of NaN
+        const double v = lua_tonumber(L, idx);
+        std::snprintf(buf, sizeof buf, "%.14g", std::isnan(v) ? std::fabs(v) : v);
         return lua_pushstring(L, buf), lua_tostring(L, -1);
       }
     case LUA_TBOOLEAN:
       return lua_toboolean(L, idx) ? "true" : "false";
     case LUA_TSTRING:
+      if (!quote) return lua_tostring(L, idx);
       return lua_pushfstring(L, "'%s'", lua_tostring(L, idx)), lua_tostring(L, -1);
     default:
       if (luaL_callmeta(L, idx, "__tostring") && lua_isstring(L, -1)) return lua_tostring(L, -1);

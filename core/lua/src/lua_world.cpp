@@ -86,7 +86,7 @@ tv::ItemId requireItem(lua_State* L, LuaWorld& w, int worldIdx, int itemIdx, con
   const std::int64_t slot = findSlot(L, lua_gettop(L), itemIdx);
   lua_pop(L, 1);
   if (slot < 0) {
-    const char* v = describe(L, itemIdx);
+    const char* v = describe(L, itemIdx, false);
     luaL_error(L,
                "Item %s must be added to the world before %s. Use world:add(item, x,y,w,h) to add "
                "it first.",
@@ -245,7 +245,7 @@ CallScope::~CallScope() { tlsCall = tlsCall->outer; }
 
 tv::ResponseId LuaFilter::operator()(tv::ItemId item, tv::ItemId other) const {
   CallContext& k = *call;
-  if (k.filterIdx == 0) return tv::response::slide;
+  if (k.filterIdx == 0) return k.world->slide;
   lua_State* L = k.L;
   lua_pushvalue(L, k.filterIdx);
   if (k.itemIdx != 0) {

@@ -83,6 +83,7 @@ struct LuaWorld {
   std::size_t scratchDepth = 0;
   std::vector<tv::Rect> starts;      // the batch step's bodies, before it
   bool luaResponses = false;         // a response was added from Lua
+  tv::ResponseId slide = tv::response::slide;  // what 'slide' names: the answer without a filter
   int busy = 0;  // > 0 while one of this world's filters or responses runs
 };
 

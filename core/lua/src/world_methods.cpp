@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <string_view>
 
 #include "boundary.hpp"
 #include "lua_world.hpp"
@@ -44,7 +46,7 @@ int add(lua_State* L) {
   pushEnv(L, 1, kItemToSlot);
   const int map = lua_gettop(L);
   if (findSlot(L, map, 2) >= 0) {
-    const char* v = describe(L, 2);
+    const char* v = describe(L, 2, false);
     luaL_error(L, "Item %s added to the world twice.", v);
   }
   const tv::Rect r = checkRect(L, 3);
@@ -429,6 +431,16 @@ int addResponse(lua_State* L) {
   if (known && id < tv::response::kBuiltinCount && isBuiltinFn && builtin == id) {
     return 0;  // re-adding a built-in under its own name
   }
+  const char* const builtinNames[] = {"touch", "cross", "slide", "bounce"};
+  if (known && id >= tv::response::kBuiltinCount && isBuiltinFn &&
+      std::string_view(lua_tostring(L, 2)) == builtinNames[builtin]) {
+    // A built-in given back its own name: the core's built-in again.
+    lua_pushvalue(L, 2);
+    lua_pushnumber(L, builtin);
+    lua_rawset(L, 4);
+    if (builtin == tv::response::slide) w.slide = builtin;
+    return 0;
+  }
   if (known && id >= tv::response::kBuiltinCount) {
     lua_pushvalue(L, 3);
     lua_rawseti(L, 5, id);  // a new function for a response added from Lua
@@ -447,6 +459,7 @@ int addResponse(lua_State* L) {
   lua_pushnumber(L, fresh);
   lua_rawset(L, 4);
   w.luaResponses = true;
+  if (std::string_view(lua_tostring(L, 2)) == "slide") w.slide = fresh;
   return 0;
 }
 
