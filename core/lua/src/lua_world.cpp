@@ -138,6 +138,39 @@ std::size_t countBumpCells(lua_State* L, int worldIdx, LuaWorld& w) {
   return w.cells.occupied() + w.cells.pending();
 }
 
+namespace {
+// (item) -> label, category: run protected, since a field read or tostring may call metamethods.
+int itemLabel(lua_State* L) {
+  if (lua_istable(L, 1)) {
+    lua_getfield(L, 1, "name");
+    lua_getfield(L, 1, "kind");
+    if (lua_type(L, -2) == LUA_TSTRING) {
+      if (lua_type(L, -1) != LUA_TSTRING) {
+        lua_pop(L, 1);
+        lua_pushliteral(L, "");
+      }
+      return 2;
+    }
+    lua_pop(L, 2);
+  }
+  lua_getglobal(L, "tostring");
+  lua_pushvalue(L, 1);
+  lua_call(L, 1, 1);
+  lua_pushliteral(L, "");
+  return 2;
+}
+}  // namespace
+
+void labelItem(lua_State* L, LuaWorld& w, int itemIdx, tv::ItemId id) {
+  const int top = lua_gettop(L);
+  lua_pushcfunction(L, itemLabel);
+  lua_pushvalue(L, itemIdx);
+  const bool ok = lua_pcall(L, 1, 2, 0) == 0 && lua_isstring(L, -2) && lua_isstring(L, -1);
+  // A label is for the debugger's eyes: an item whose tostring fails is recorded unlabelled.
+  if (ok) w.recorder->label(id, lua_tostring(L, -2), lua_tostring(L, -1));
+  lua_settop(L, top);
+}
+
 // [SECTION] responses by name --------------------------------------------------------------------
 
 void pushResponseName(lua_State* L, int worldIdx, tv::ResponseId id) {

@@ -14,6 +14,7 @@
 #include "tv/batch.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
+#include "tv/record/recorder.hpp"
 #include "tv/world.hpp"
 
 namespace tvlua {
@@ -85,7 +86,12 @@ struct LuaWorld {
   bool luaResponses = false;         // a response was added from Lua
   tv::ResponseId slide = tv::response::slide;  // what 'slide' names: the answer without a filter
   int busy = 0;  // > 0 while one of this world's filters or responses runs
+  std::unique_ptr<tv::Recorder> recorder;  // declared last, destroyed first: it detaches
 };
+
+/// While recording: names the item at `itemIdx` (handle `id`) for the debugger, from its `name`
+/// field (a table's, when a string) or tostring, with its `kind` field as the category.
+void labelItem(lua_State* L, LuaWorld& w, int itemIdx, tv::ItemId id);
 
 /// Borrows the world's scratch for one call; the next nested call gets the next one.
 class Lease {
@@ -187,6 +193,8 @@ tv::Leg luaResponse(const tv::Collision& c, tv::Vec2 goal);
 // Registration (module.cpp builds the tables from these).
 void registerWorldMethods(lua_State* L, int methodsIdx);   // bump's World API
 void registerExtraMethods(lua_State* L, int methodsIdx);   // tunnelvision's additions
+void registerRecordingMethods(lua_State* L, int methodsIdx);  // startRecording, frame...
+void pushValidateRecording(lua_State* L);                     // tunnelvision.validateRecording
 void pushRectFunctions(lua_State* L);                      // bump.rect
 void pushResponseFunctions(lua_State* L);                  // bump.responses
 /// newWorld(cellSize): upvalue 1 is the methods table.

@@ -16,6 +16,7 @@ void pushBump(lua_State* L) {
   const int methods = lua_gettop(L);
   tvlua::registerWorldMethods(L, methods);
   tvlua::registerExtraMethods(L, methods);
+  tvlua::registerRecordingMethods(L, methods);
   lua_createtable(L, 0, 1);  // the metatable of each world's field table
   lua_pushvalue(L, methods);
   lua_setfield(L, -2, "__index");
@@ -58,6 +59,8 @@ TV_LUA_EXPORT int luaopen_tunnelvision(lua_State* L) {
     lua_rawseti(L, -2, ++i);
   }
   lua_setfield(L, -2, "movers");
+  tvlua::pushValidateRecording(L);
+  lua_setfield(L, -2, "validateRecording");
   lua_pushliteral(L, "tunnelvision 0.1");
   lua_setfield(L, -2, "_VERSION");
   // So that a LÖVE game whose C loader finds only tunnelvision.so can also require

@@ -60,6 +60,7 @@ int add(lua_State* L) {
   lua_pushvalue(L, 2);
   lua_rawseti(L, -2, static_cast<int>(id.index) + 1);
   moveCells(L, 1, w, nullptr, &r);
+  if (w.recorder) labelItem(L, w, 2, id);
   lua_settop(L, 2);
   return 1;
 }
