@@ -1,5 +1,6 @@
--- A small platformer written against bump.lua's API. The only Tunnelvision-specific line is the
--- require: swap it for `require 'bump'` and the game runs on bump.lua 3.1.7.
+-- A small platformer written against bump.lua's API. Besides the require, the only
+-- Tunnelvision-specific calls are world:frame() and the recording (--record): remove those and
+-- swap the require for `require 'bump'`, and the game runs on bump.lua 3.1.7.
 --
 --   love .                        play: arrows or A/D to run, Space/Up/W to jump
 --   love . --frames 300           play itself for 300 frames, check what it saw, exit 0 or 1
@@ -127,8 +128,15 @@ function love.load(args)
     if args[i] == '--frames' then maxFrames = tonumber(args[i + 1]) end
     if args[i] == '--record' then recordPath = args[i + 1] end
   end
+  if maxFrames then
+    -- playing itself (CI): an error ends the run with status 1, not on LÖVE's error screen
+    function love.errorhandler(msg)
+      print('ERROR ' .. debug.traceback(tostring(msg), 2))
+      os.exit(1)
+    end
+  end
   build()
-  if recordPath and world.startRecording then world:startRecording(recordPath) end
+  if recordPath then world:startRecording(recordPath) end
 end
 
 local function autoplay()
@@ -151,12 +159,19 @@ function love.update(dt)
   end
   updatePlayer(dt)
   updateEnemies(dt)
-  if world.frame then world:frame() end
+  world:frame()  -- one rendered frame ends (for a recording; nothing otherwise)
   if maxFrames then
     check()
     if frame >= maxFrames then
       local x = world:getRect(player)
-      if world.stopRecording then world:stopRecording() end
+      if recordPath then
+        local frames, calls = world:stopRecording()
+        if not frames then failures[#failures + 1] = 'recording failed: ' .. tostring(calls) end
+        -- the recording must replay bit for bit (what tv-replay --validate checks)
+        local ok, report = require('tunnelvision').validateRecording(recordPath)
+        print(('recorded %s frames, %s calls into %s: %s'):format(frames, calls, recordPath, report))
+        if not ok then failures[#failures + 1] = 'recording diverges: ' .. report end
+      end
       if x - player.startX < 300 then failures[#failures + 1] = ('player only got %.1f px far'):format(x - player.startX) end
       if score == 0 then failures[#failures + 1] = 'no coin collected' end
       for _, f in ipairs(failures) do print('FAIL ' .. f) end
