@@ -181,7 +181,7 @@ inline std::vector<std::size_t> chunks(const std::vector<std::uint8_t>& b) {
   std::size_t pos = 32;
   while (pos + 8 <= b.size()) {
     const std::uint32_t len = le32(b, pos);
-    if (len == 0) break;
+    if (len == 0 || len > b.size() - pos - 8) break;
     out.push_back(pos);
     pos += 8 + len;
   }

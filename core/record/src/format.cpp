@@ -569,6 +569,22 @@ void requireBudget(In& in, const Model& m, std::uint64_t extra, std::uint64_t ma
   }
 }
 
+// A replayed call costs time in proportion to the cells it visits: refuse, as hostile, a call
+// that would visit more cells than the budget allows (a move of 10^15 px, a query over the
+// whole plane), instead of replaying it for hours.
+void requireReach(In& in, const Model& m, std::uint64_t at, const Rect& r, Vec2 goal,
+                  bool wholeHull, std::uint64_t maxCells, std::string_view what) {
+  const double c = m.cellSize;
+  const double dx = std::fabs(goal.x - r.x) / c, dy = std::fabs(goal.y - r.y) / c;
+  const double w = r.w / c + 2, h = r.h / c + 2;
+  const double cells = wholeHull ? (dx + w) * (dy + h) : (dx + dy + 1) * std::max(w, h);
+  if (!(cells <= static_cast<double>(maxCells))) {
+    in.failAt(at, std::string(what) + " would visit about " + formatNumber(std::floor(cells)) +
+                      " cells, more than the replay's budget of " + std::to_string(maxCells) +
+                      " (ReplayOptions::maxCells)");
+  }
+}
+
 Vec2 readGoal(In& in, const Model::Slot& s, std::string_view what) {
   GroupIn g(in, what);
   const double x = g.get(s.rect.x + s.lastDelta.x, s.rect.x, s.rect.x);
@@ -953,6 +969,9 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       Model::Slot& s = m.slots[c.item.index];
       c.start = s.rect;
       c.goal = readGoal(in, s, "goal");
+      const bool hull = c.broad == BroadPhase::bounds ||
+                        (mover && m.movers[c.mover].kind == MoverKind::sweep);
+      requireReach(in, m, c.offset, s.rect, c.goal, hull, maxCells, callKindName(c.kind));
       const Vec2 d = c.goal - s.rect.position();
       if (sameBits(s.rect.x + d.x, c.goal.x) && sameBits(s.rect.y + d.y, c.goal.y)) s.lastDelta = d;
       if (kb & kFree) {
@@ -986,6 +1005,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
         c.goal.x = g.get(c.rect.x, 0, c.rect.x);
         c.goal.y = g.get(c.rect.y, 0, c.rect.y);
       }
+      if (!(c.rect.w > 0 && c.rect.h > 0)) in.failAt(c.offset, "project of a rect with w or h <= 0");
+      requireReach(in, m, c.offset, c.rect, c.goal, c.broad == BroadPhase::bounds, maxCells, "project");
       if (kb & kFree) {
         c.position = c.goal;
       } else {
@@ -1012,6 +1033,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       c.rect.y = g.get(p.y, 0);
       c.rect.w = g.get(p.w, 0);
       c.rect.h = g.get(p.h, c.rect.w);
+      requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells, callKindName(c.kind));
       if (any) {
         c.any = kb & kAny;
         if (kb & kAnswers) readAnswers(in, m, c, c.skip);
@@ -1037,6 +1059,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
         c.b.x = g.get(c.goal.x, 0, c.goal.x);
         c.b.y = g.get(c.goal.y, 0, c.goal.y);
       }
+      requireReach(in, m, c.offset, Rect{c.goal.x, c.goal.y, 0, 0}, c.b, false, maxCells, "querySegment");
       const std::size_t n = in.count("segment hit count", 3);
       std::int64_t prev = 0;
       for (std::size_t k = 0; k < n; ++k) {
@@ -1084,6 +1107,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
         Model::Slot& s = m.slots[b.item.index];
         b.start = s.rect;
         b.goal = readGoal(in, s, "batch goal");
+        requireReach(in, m, c.offset, s.rect, b.goal, false, maxCells, "batch move");
         const Vec2 d = b.goal - s.rect.position();
         if (sameBits(s.rect.x + d.x, b.goal.x) && sameBits(s.rect.y + d.y, b.goal.y)) s.lastDelta = d;
         c.bodies.push_back(b);

@@ -222,6 +222,11 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
   // What-if: one move by the other mover, measured against the recording.
   const auto whatIfMove = [&](ItemId item, Vec2 goal, Vec2 recorded) {
     const Rect S = world->rect(item);
+    if (whatIfMover->spec().kind == MoverKind::sweep &&
+        rec::cellCount(cellSize, unite(S, S.at(goal))) > options.maxCells) {
+      if (report) ++report->failedCalls;  // its hull alone would take the budget's time
+      return;
+    }
     whatIfMover->move(*world, item, goal, filter, trace);
     if (!report) return;
     const Rect E = world->rect(item);
