@@ -1,0 +1,204 @@
+#pragma once
+// The world userdata shared by `tunnelvision` and `tunnelvision.bump`: a tv::World plus what a
+// Lua binding needs around it — the item <-> handle maps (in Lua tables, so that item identity
+// is exactly Lua's raw table-key equality), the responses by name, bump.lua's cell count.
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include <lua.hpp>
+
+#include "tv/batch.hpp"
+#include "tv/error.hpp"
+#include "tv/mover.hpp"
+#include "tv/record/recorder.hpp"
+#include "tv/world.hpp"
+
+namespace tvlua {
+
+// Slots of a world's environment table (lua_setfenv on the userdata).
+enum Env : int {
+  kItemToSlot = 1,   // item -> slot index (number)
+  kSlotToItem = 2,   // slot index + 1 -> item
+  kNameToId = 3,     // response name -> core ResponseId
+  kSentinel = 4,     // weak-valued: [1] a table that dies at the next collection (countCells)
+  kIdToFn = 5,       // core ResponseId -> the Lua function of a response added from Lua
+  kIdToName = 6,     // core ResponseId -> the name Lua knows it by
+  kSavedCols = 7,    // during a move: collision tables a Lua response saw, by collision index
+  kEnvSize = 7
+};
+
+/// bump.lua's grid, kept only to count cells as bump does (countCells): cell (cx, cy), 1-based,
+/// from floor(x / size) + 1 to ceil((x + w) / size), and an emptied cell lives on until the
+/// next garbage collection (bump's cells sit in weak tables).
+class BumpCells {
+ public:
+  struct Range {
+    std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+    friend bool operator==(const Range&, const Range&) = default;
+  };
+  explicit BumpCells(double size) : size_(size) {}
+  [[nodiscard]] Range of(const tv::Rect& r) const;
+  /// Registers (+1) or unregisters (-1) an item over a range; returns true when a cell emptied.
+  bool add(const Range& r);
+  bool remove(const Range& r);
+  [[nodiscard]] std::size_t occupied() const { return counts_.size(); }
+  [[nodiscard]] std::size_t pending() const { return emptied_.size(); }
+  void collect() { emptied_.clear(); }
+
+ private:
+  struct Hash {
+    std::size_t operator()(std::uint64_t k) const noexcept { return k * 0x9E3779B97F4A7C15ull; }
+  };
+  static std::uint64_t key(std::int64_t x, std::int64_t y) {
+    return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y);
+  }
+  double size_;
+  std::unordered_map<std::uint64_t, std::uint32_t, Hash> counts_;
+  std::unordered_set<std::uint64_t, Hash> emptied_;
+};
+
+struct LuaWorld {
+  static constexpr std::uint64_t kMagic = 0x74766C7561776F72ull;
+  explicit LuaWorld(double cellSize) : world(cellSize), cells(cellSize) {}
+  ~LuaWorld();
+  LuaWorld(const LuaWorld&) = delete;
+  LuaWorld& operator=(const LuaWorld&) = delete;
+
+  std::uint64_t magic = kMagic;
+  tv::World world;
+  std::unique_ptr<tv::Mover> mover;  // null: World::move, the exact continuous move
+  tv::Batch batch;
+  BumpCells cells;
+  std::vector<tv::Collision> last;   // the last `go`'s collisions (getCollision)
+  std::vector<tv::BatchMove> moves;  // the batch step's input
+  // Query and project scratch, one per nesting level (a filter may query the same world).
+  struct Scratch {
+    std::vector<tv::ItemId> items;
+    std::vector<tv::Collision> cols;
+  };
+  std::vector<std::unique_ptr<Scratch>> scratch;
+  std::size_t scratchDepth = 0;
+  std::vector<tv::Rect> starts;      // the batch step's bodies, before it
+  bool luaResponses = false;         // a response was added from Lua
+  tv::ResponseId slide = tv::response::slide;  // what 'slide' names: the answer without a filter
+  int busy = 0;  // > 0 while one of this world's filters or responses runs
+  std::unique_ptr<tv::Recorder> recorder;  // declared last, destroyed first: it detaches
+};
+
+/// While recording: names the item at `itemIdx` (handle `id`) for the debugger, from its `name`
+/// field (a table's, when a string) or tostring, with its `kind` field as the category.
+void labelItem(lua_State* L, LuaWorld& w, int itemIdx, tv::ItemId id);
+
+/// Borrows the world's scratch for one call; the next nested call gets the next one.
+class Lease {
+ public:
+  explicit Lease(LuaWorld& w) : w_(w) {
+    if (w.scratchDepth == w.scratch.size()) w.scratch.push_back(std::make_unique<LuaWorld::Scratch>());
+    s_ = w.scratch[w.scratchDepth++].get();
+    s_->items.clear();
+    s_->cols.clear();
+  }
+  ~Lease() { --w_.scratchDepth; }
+  Lease(const Lease&) = delete;
+  Lease& operator=(const Lease&) = delete;
+  LuaWorld::Scratch* operator->() const { return s_; }
+
+ private:
+  LuaWorld& w_;
+  LuaWorld::Scratch* s_;
+};
+
+/// Marks a world busy while its filters or responses may run: they must not change it.
+class Busy {
+ public:
+  explicit Busy(LuaWorld& w) : w_(w) { ++w.busy; }
+  ~Busy() { --w_.busy; }
+  Busy(const Busy&) = delete;
+  Busy& operator=(const Busy&) = delete;
+
+ private:
+  LuaWorld& w_;
+};
+/// Raises "world:<what> cannot be called while one of the world's filters or responses runs".
+void checkNotBusy(lua_State* L, LuaWorld& w, const char* what);
+/// Moves an item's registration in bump's cells (from or to may be null: add, remove). Emptied
+/// cells stay counted until the next garbage collection, as bump's weak cell tables do.
+void moveCells(lua_State* L, int worldIdx, LuaWorld& w, const tv::Rect* from, const tv::Rect* to);
+/// countCells: bump's cells, emptied ones included until they would have been collected.
+std::size_t countBumpCells(lua_State* L, int worldIdx, LuaWorld& w);
+
+/// The world at `idx`, or a Lua error "bad self: expected a world, got <value>".
+LuaWorld& checkWorld(lua_State* L, int idx);
+/// Pushes env[slot] of the world at `idx`.
+void pushEnv(lua_State* L, int worldIdx, int slot);
+/// The slot of the item at `itemIdx`, or -1 when it is not in the world. `mapIdx` is the
+/// item -> slot table.
+std::int64_t findSlot(lua_State* L, int mapIdx, int itemIdx);
+/// An item argument: anything but nil and NaN.
+void checkItem(lua_State* L, int idx);
+/// The handle of the item at `itemIdx`; raises bump's "Item x must be added to the world
+/// before <doing>. Use world:add(item, x,y,w,h) to add it first."
+tv::ItemId requireItem(lua_State* L, LuaWorld& w, int worldIdx, int itemIdx, const char* doing);
+
+/// The name of a response, for `col.type`.
+void pushResponseName(lua_State* L, int worldIdx, tv::ResponseId id);
+/// A filter's answer (on top of the stack, popped) as a response: nil/false -> ignore.
+tv::ResponseId answerToResponse(lua_State* L, LuaWorld& w, int worldIdx);
+
+/// Pushes a bump collision table for `c`; `itemIdx` is the mover (0: nil), `slotToItem` the
+/// slot -> item table.
+void pushCollision(lua_State* L, int worldIdx, int slotToItem, int itemIdx, const tv::Collision& c,
+                   bool withTarget);
+
+/// While a filter or response of a world runs: the Lua state, the world, and the stack slots of
+/// the call's arguments. Responses added from Lua find it here: the core calls a response
+/// through a plain function pointer, which has no room for a context.
+struct CallContext {
+  lua_State* L = nullptr;
+  LuaWorld* world = nullptr;
+  int worldIdx = 0;
+  int itemIdx = 0;    // the mover (0 for project of nil)
+  int filterIdx = 0;  // 0: no filter (everything slides)
+  int slotToItem = 0;
+  int savedCols = 0;  // 0: collision tables the responses see are not kept
+  int responded = 0;  // responses run so far in this call
+  CallContext* outer = nullptr;
+};
+CallContext* currentCall();
+/// Installs `c` as the current call until destroyed (nests: a filter may move another world).
+class CallScope {
+ public:
+  explicit CallScope(CallContext& c);
+  ~CallScope();
+  CallScope(const CallScope&) = delete;
+  CallScope& operator=(const CallScope&) = delete;
+};
+
+/// The filter of a move, check or project: calls the Lua function `filter(item, other)` (or
+/// answers slide for everything when there is none). A raising filter throws LuaRaised with
+/// the error on the stack.
+struct LuaFilter {
+  CallContext* call;
+  tv::ResponseId operator()(tv::ItemId item, tv::ItemId other) const;
+};
+
+/// The core response that runs a response added from Lua (bump's signature:
+/// fn(world, col, x,y,w,h, goalX, goalY, filter) -> goalX, goalY).
+tv::Leg luaResponse(const tv::Collision& c, tv::Vec2 goal);
+
+// Registration (module.cpp builds the tables from these).
+void registerWorldMethods(lua_State* L, int methodsIdx);   // bump's World API
+void registerExtraMethods(lua_State* L, int methodsIdx);   // tunnelvision's additions
+void registerRecordingMethods(lua_State* L, int methodsIdx);  // startRecording, frame...
+void pushValidateRecording(lua_State* L);                     // tunnelvision.validateRecording
+void pushRectFunctions(lua_State* L);                      // bump.rect
+void pushResponseFunctions(lua_State* L);                  // bump.responses
+/// newWorld(cellSize): upvalue 1 is the methods table.
+int newWorld(lua_State* L);
+bool isBuiltinResponse(lua_CFunction f, tv::ResponseId& id);
+
+}  // namespace tvlua

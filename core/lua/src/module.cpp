@@ -1,0 +1,84 @@
+// The entry points: `require 'tunnelvision.bump'` (bump.lua 3.1.7's API) and
+// `require 'tunnelvision'` (the same worlds with our additions). Both are re-entrant: every
+// open builds fresh tables (busted reloads modules once per spec file).
+
+#include "boundary.hpp"
+#include "lua_world.hpp"
+#include "tv/mover.hpp"
+
+#define TV_LUA_EXPORT extern "C" __attribute__((visibility("default")))
+
+namespace {
+
+// Pushes the bump module table.
+void pushBump(lua_State* L) {
+  lua_newtable(L);  // methods
+  const int methods = lua_gettop(L);
+  tvlua::registerWorldMethods(L, methods);
+  tvlua::registerExtraMethods(L, methods);
+  tvlua::registerRecordingMethods(L, methods);
+  lua_createtable(L, 0, 1);  // the metatable of each world's field table
+  lua_pushvalue(L, methods);
+  lua_setfield(L, -2, "__index");
+
+  lua_createtable(L, 0, 8);
+  lua_pushvalue(L, -2);
+  lua_pushcclosure(L, tvlua::guarded<tvlua::newWorld>, 1);
+  lua_setfield(L, -2, "newWorld");
+  tvlua::pushRectFunctions(L);
+  lua_setfield(L, -2, "rect");
+  tvlua::pushResponseFunctions(L);
+  lua_setfield(L, -2, "responses");
+  lua_pushliteral(L, "bump v3.1.7 (tunnelvision)");
+  lua_setfield(L, -2, "_VERSION");
+  lua_pushliteral(L, "bump.lua's API on Tunnelvision's swept-AABB core");
+  lua_setfield(L, -2, "_DESCRIPTION");
+  lua_replace(L, methods);
+  lua_settop(L, methods);
+}
+
+}  // namespace
+
+TV_LUA_EXPORT int luaopen_tunnelvision_bump(lua_State* L) {
+  pushBump(L);
+  return 1;
+}
+
+TV_LUA_EXPORT int luaopen_tunnelvision(lua_State* L) {
+  pushBump(L);
+  const int bump = lua_gettop(L);
+  lua_createtable(L, 0, 6);
+  lua_getfield(L, bump, "newWorld");
+  lua_setfield(L, -2, "newWorld");
+  lua_pushvalue(L, bump);
+  lua_setfield(L, -2, "bump");
+  lua_newtable(L);
+  int i = 0;
+  for (const std::string_view name : tv::moverNames()) {
+    lua_pushlstring(L, name.data(), name.size());
+    lua_rawseti(L, -2, ++i);
+  }
+  lua_setfield(L, -2, "movers");
+  tvlua::pushValidateRecording(L);
+  lua_setfield(L, -2, "validateRecording");
+  lua_pushliteral(L, "tunnelvision 0.1");
+  lua_setfield(L, -2, "_VERSION");
+  // So that a LÖVE game whose C loader finds only tunnelvision.so can also require
+  // 'tunnelvision.bump' once 'tunnelvision' is loaded.
+  lua_getglobal(L, "package");
+  if (lua_istable(L, -1)) {
+    lua_getfield(L, -1, "loaded");
+    if (lua_istable(L, -1)) {
+      lua_getfield(L, -1, "tunnelvision.bump");
+      const bool loaded = !lua_isnil(L, -1);
+      lua_pop(L, 1);
+      if (!loaded) {
+        lua_pushvalue(L, bump);
+        lua_setfield(L, -2, "tunnelvision.bump");
+      }
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return 1;
+}

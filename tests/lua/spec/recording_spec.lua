@@ -1,0 +1,83 @@
+-- world:startRecording / stopRecording: a game's calls into a .tvrec file that replays bit for
+-- bit (tunnelvision.validateRecording is tv-replay --validate from Lua).
+local tv = require 'tunnelvision'
+
+local function tmpfile()
+  local path = os.tmpname()
+  return path
+end
+
+describe('recording', function()
+  it('records a play-through, filters and Lua responses included, that replays bit for bit', function()
+    local path = tmpfile()
+    local world = tv.newWorld(16)
+    for i = 0, 20 do world:add({ name = 'tile ' .. i, kind = 'tile' }, i * 16, 100, 16, 16) end
+    world:add({ name = 'cloud', kind = 'cloud' }, 40, 60, 32, 4)
+    local player = { name = 'player', kind = 'player' }
+    world:add(player, 0, 40, 10, 13.7)
+    world:addResponse('stick', function(_, col) return col.touch.x, col.touch.y end)
+    world:add(7, 200, 0, 8, 8)                 -- labelled by tostring
+    world:startRecording(path)
+    assert.is_true(world:isRecording())
+    local filter = function(_, other)
+      if type(other) == 'table' and other.kind == 'cloud' then return 'stick' end
+      return 'slide'
+    end
+    local x, y = 0, 40
+    for _ = 1, 120 do
+      x, y = world:move(player, x + 2, y + 3, filter)
+      world:queryRect(x - 8, y - 8, 26, 30)
+      world:frame()
+    end
+    local frames, calls, bytes = world:stopRecording()
+    assert.is_false(world:isRecording())
+    assert.is_true(frames >= 120)
+    assert.is_true(calls >= 240)
+    assert.is_true(bytes > 0)
+    local ok, report = tv.validateRecording(path)
+    assert.is_true(ok, report)
+    os.remove(path)
+  end)
+
+  -- tv::record at this commit: a body that lands on a floor and, frames later, crosses a coin
+  -- while sliding along it is recorded so that the replay cannot decode that move ("answer
+  -- count 3 is more than the chunk can hold" at frame 35). Kept as the reproduction until the
+  -- recorder is fixed: then this becomes an `it`.
+  pending('a body that lands, walks and crosses a coin replays', function()
+    local path = tmpfile()
+    local world = tv.newWorld(16)
+    for i = 0, 20 do world:add('tile' .. i, i * 16, 100, 16, 16) end
+    world:add('player', 0, 40, 10, 13.7)
+    world:add('coin', 80, 80, 8, 8)
+    world:startRecording(path)
+    local x, y = 0, 40
+    for _ = 1, 40 do
+      x, y = world:move('player', x + 2, y + 3, function(_, o) return o == 'coin' and 'cross' or 'slide' end)
+      world:frame()
+    end
+    world:stopRecording()
+    local ok, report = tv.validateRecording(path)
+    os.remove(path)
+    assert.is_true(ok, report)
+  end)
+
+  it('refuses a path it cannot write, naming it, and records nothing', function()
+    local world = tv.newWorld()
+    local ok, err = pcall(world.startRecording, world, '/nonexistent-dir/x.tvrec')
+    assert.is_false(ok)
+    assert.matches('nonexistent%-dir', err)
+    assert.is_false(world:isRecording())
+    assert.has_error(function() world:stopRecording() end, 'world:stopRecording: this world is not recording')
+  end)
+
+  it('validateRecording refuses a file that is not a recording, with a clear error', function()
+    local path = tmpfile()
+    local f = assert(io.open(path, 'wb'))
+    f:write('definitely not a recording')
+    f:close()
+    local ok, err = pcall(tv.validateRecording, path)
+    assert.is_false(ok)
+    assert.matches('byte %d+', err)
+    os.remove(path)
+  end)
+end)
