@@ -31,20 +31,13 @@ const char* const kUsage =
     "                   of the scene at the tick, write it to F and exit; tv-render given the\n"
     "                   same flags writes the same pixels\n"
     "  --app-screenshot F  the same, of the whole debugger window\n"
-    "A recording (GAME.tvrec, written by tv::Recorder; or File > Open recording..., or drop the
-"
-    "file on the window) opens at frame N (default 0), with call K of it selected and the item
-"
-    "labelled LABEL traced; --screenshot then writes tv-render --open's picture of it.
-"
-    "  --what-if MOVER  re-run the recording with MOVER beside the recorded run (What-if menu)
-"
-    "  --updates-as-moves  in that run, an update that only moves an item is made a move
-"
-    "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter
-"
-    "values) live in
-"
+    "A recording (GAME.tvrec, written by tv::Recorder; or File > Open recording..., or drop the\n"
+    "file on the window) opens at frame N (default 0), with call K of it selected and the item\n"
+    "labelled LABEL traced; --screenshot then writes tv-render --open's picture of it.\n"
+    "  --what-if MOVER  re-run the recording with MOVER beside the recorded run (What-if menu)\n"
+    "  --updates-as-moves  in that run, an update that only moves an item is made a move\n"
+    "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
+    "values) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
     "Exit status: 0 done, 1 failed (no display, GL), 2 bad command line.\n";
 
