@@ -240,6 +240,11 @@ int runPareto(const Options& o) {
     throw UsageError{"--moves " + std::to_string(moves) + ": expected 100 to 10000000"};
   }
   const int repeats = o.pick(1, 3, 5);
+  // A published file is read (and refused) before anything is printed.
+  const auto published = o.has("from-csv") ? readPublished(o.extra.at("from-csv"), moves)
+                                           : std::vector<std::pair<std::string, Stats>>{};
+  std::vector<std::string> labels;
+  std::vector<Stats> stats;
   std::ostream& os = std::cout;
   printHeading(os, "pareto: run time against position error", modeName(o.mode), o.seed, o.out);
   os << "Workload: " << moves
@@ -257,15 +262,12 @@ int runPareto(const Options& o) {
         "along the wall; their errors of tens of px are mostly that. Likewise pixel moves along x "
         "then y, a staircase that can go round a corner the straight move hits: its "
         "'tunnelled' shots are that, never a pass through a solid (it tests every pixel).\n\n";
-  std::vector<std::string> labels;
-  std::vector<Stats> stats;
-  if (o.has("from-csv")) {
-    const std::string& from = o.extra.at("from-csv");
-    for (auto& [label, st] : readPublished(from, moves)) {
+  if (!published.empty()) {
+    for (auto& [label, st] : published) {
       labels.push_back(label);
       stats.push_back(st);
     }
-    os << "(Numbers read from " << from << ", not measured again.)\n\n";
+    os << "(Numbers read from " << o.extra.at("from-csv") << ", not measured again.)\n\n";
   } else {
     Workload w;
     build(w, moves, o.seed);
