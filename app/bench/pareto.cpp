@@ -3,9 +3,13 @@
 // (exact_slide.hpp), and the same moves are timed.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <numbers>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include "exact_slide.hpp"
@@ -159,6 +163,74 @@ Stats measure(Workload& w, const Config& c, int repeats) {
   return s;
 }
 
+// One row of a pareto.csv written by this study: configuration, ns/move, max, p99 and mean
+// error, exact and tunnelled shares ("18.7%"), front. The file is untrusted: every field is
+// checked and a bad one is refused naming the line and the column.
+std::vector<std::pair<std::string, Stats>> readPublished(const std::string& path,
+                                                         std::size_t moves) {
+  // A published pareto.csv is about 1 KB: anything over 1 MB is not one (and is not read).
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  if (ec) throw UsageError{"--from-csv " + path + ": cannot read it (" + ec.message() + ")"};
+  if (bytes > (1u << 20))
+    throw UsageError{"--from-csv " + path + ": " + std::to_string(bytes) +
+                     " bytes; a pareto.csv is far smaller (at most 1 MB is read)"};
+  std::ifstream in(path);
+  if (!in) throw UsageError{"--from-csv " + path + ": cannot open it"};
+  std::vector<std::pair<std::string, Stats>> rows;
+  std::string line;
+  std::size_t number = 0;
+  const auto bad = [&](const std::string& what) {
+    return UsageError{"--from-csv " + path + ":" + std::to_string(number) + ": " + what};
+  };
+  while (std::getline(in, line)) {
+    ++number;
+    if (number == 1) {
+      if (line.rfind("configuration,ns/move,max error px,", 0) != 0)
+        throw bad("expected the header of a pareto.csv, got '" + line.substr(0, 60) + "'");
+      continue;
+    }
+    if (line.empty()) continue;
+    if (rows.size() >= 1000) throw bad("more than 1000 rows");
+    std::vector<std::string> f;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = line.find(',', start);
+      f.push_back(line.substr(start, comma - start));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (f.size() != 8) throw bad("expected 8 fields, got " + std::to_string(f.size()));
+    const auto num = [&](std::size_t k, const char* column) {
+      double v = -1;
+      try {
+        v = parseNumber(column, f[k]);
+      } catch (const UsageError&) {
+        v = -1;
+      }
+      if (!(v >= 0)) throw bad(std::string(column) + ": expected a number >= 0, got '" + f[k] + "'");
+      return v;
+    };
+    const auto share = [&](std::size_t k, const char* column) {
+      if (f[k].empty() || f[k].back() != '%') throw bad(std::string(column) + ": expected N%");
+      f[k].pop_back();
+      const double pct = num(k, column);
+      if (pct > 100) throw bad(std::string(column) + ": over 100%");
+      return static_cast<std::size_t>(std::llround(pct * static_cast<double>(moves) / 100.0));
+    };
+    Stats st;
+    st.ns = num(1, "ns/move");
+    st.maxErr = num(2, "max error px");
+    st.p99 = num(3, "p99 error px");
+    st.mean = num(4, "mean error px");
+    st.exact = share(5, "exact");
+    st.tunnelled = share(6, "tunnelled");
+    rows.emplace_back(f[0], st);
+  }
+  if (rows.empty()) throw bad("no rows");
+  return rows;
+}
+
 }  // namespace
 
 int runPareto(const Options& o) {
@@ -168,6 +240,11 @@ int runPareto(const Options& o) {
     throw UsageError{"--moves " + std::to_string(moves) + ": expected 100 to 10000000"};
   }
   const int repeats = o.pick(1, 3, 5);
+  // A published file is read (and refused) before anything is printed.
+  const auto published = o.has("from-csv") ? readPublished(o.extra.at("from-csv"), moves)
+                                           : std::vector<std::pair<std::string, Stats>>{};
+  std::vector<std::string> labels;
+  std::vector<Stats> stats;
   std::ostream& os = std::cout;
   printHeading(os, "pareto: run time against position error", modeName(o.mode), o.seed, o.out);
   os << "Workload: " << moves
@@ -185,25 +262,33 @@ int runPareto(const Options& o) {
         "along the wall; their errors of tens of px are mostly that. Likewise pixel moves along x "
         "then y, a staircase that can go round a corner the straight move hits: its "
         "'tunnelled' shots are that, never a pass through a solid (it tests every pixel).\n\n";
-  Workload w;
-  build(w, moves, o.seed);
-  const std::vector<Config> cs = configs();
-  Progress progress("pareto", cs.size());
-  std::vector<Stats> stats;
-  for (const Config& c : cs) {
-    stats.push_back(measure(w, c, repeats));
-    progress.step(c.label);
+  if (!published.empty()) {
+    for (auto& [label, st] : published) {
+      labels.push_back(label);
+      stats.push_back(st);
+    }
+    os << "(Numbers read from " << o.extra.at("from-csv") << ", not measured again.)\n\n";
+  } else {
+    Workload w;
+    build(w, moves, o.seed);
+    const std::vector<Config> cs = configs();
+    Progress progress("pareto", cs.size());
+    for (const Config& c : cs) {
+      labels.push_back(c.label);
+      stats.push_back(measure(w, c, repeats));
+      progress.step(c.label);
+    }
   }
   Table t({"configuration", "ns/move:", "max error px:", "p99 error px:", "mean error px:",
            "exact:", "tunnelled:", "front"});
   // The front: among the configurations that never tunnel, those no other is both at least as
   // fast as and at most as wrong as (by max error). A mover that tunnels is never on it, however
   // fast: the front reads "the fastest among the correct ones" (the plot marks the others).
-  std::vector<bool> front(cs.size(), false);
-  for (std::size_t i = 0; i < cs.size(); ++i) {
+  std::vector<bool> front(labels.size(), false);
+  for (std::size_t i = 0; i < labels.size(); ++i) {
     if (stats[i].tunnelled > 0) continue;
     bool dominated = false;
-    for (std::size_t j = 0; j < cs.size(); ++j) {
+    for (std::size_t j = 0; j < labels.size(); ++j) {
       if (j == i || stats[j].tunnelled > 0) continue;
       const bool noWorse = stats[j].ns <= stats[i].ns && stats[j].maxErr <= stats[i].maxErr;
       const bool better = stats[j].ns < stats[i].ns || stats[j].maxErr < stats[i].maxErr;
@@ -220,13 +305,13 @@ int runPareto(const Options& o) {
   plot.legendBad = "tunnels";
   plot.legendFront = "Pareto front of the movers that never tunnel (time, max error)";
   plot.keyColumns = {"ns/move", "max err px", "tunnelled"};
-  for (std::size_t i = 0; i < cs.size(); ++i) {
+  for (std::size_t i = 0; i < labels.size(); ++i) {
     const Stats& s = stats[i];
-    t.add({cs[i].label, fixed(s.ns, 0), sig3(s.maxErr), sig3(s.p99), sig3(s.mean),
+    t.add({labels[i], fixed(s.ns, 0), sig3(s.maxErr), sig3(s.p99), sig3(s.mean),
            percent(static_cast<double>(s.exact), static_cast<double>(moves)),
            percent(static_cast<double>(s.tunnelled), static_cast<double>(moves)),
            front[i] ? "yes" : ""});
-    plot.points.push_back({cs[i].label, std::max(s.ns, 1.0), s.maxErr, s.tunnelled > 0, front[i],
+    plot.points.push_back({labels[i], std::max(s.ns, 1.0), s.maxErr, s.tunnelled > 0, front[i],
                            {fixed(s.ns, 0), sig3(s.maxErr),
                             percent(static_cast<double>(s.tunnelled), static_cast<double>(moves))}});
   }

@@ -226,7 +226,7 @@ void writeScatterPng(const ScatterPlot& plot, const std::filesystem::path& path)
       std::max(900.0, std::ceil(top + kRowH * static_cast<double>(n + 1) + 160)));
   Canvas c(kW, kH);
   const double bottom = kH - 150;
-  const double zeroBand = 80;  // below the log axis: where error 0 is drawn
+  const double zeroBand = 120;  // below the log axis: where error 0 is drawn, in three rows
   const double plotBottom = bottom - zeroBand;
 
   double minX = 1e300, maxX = 0, minY = 1e300, maxY = 0;
@@ -320,7 +320,7 @@ void writeScatterPng(const ScatterPlot& plot, const std::filesystem::path& path)
       }
       if (r == rows.size()) r = 0;
       rows[r].push_back(px[i]);
-      py[i] = plotBottom + 4 + (zeroBand - 4) * (0.25 + 0.25 * static_cast<double>(r));
+      py[i] = plotBottom + 4 + (zeroBand - 4) * (0.2 + 0.3 * static_cast<double>(r));
     }
   }
 

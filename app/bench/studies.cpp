@@ -11,7 +11,9 @@ std::span<const Study> studies() {
        runTunnel},
       {"pareto",
        "run time against position error against an exact rational reference",
-       {{"moves", "moves in the workload (default 20000)"}},
+       {{"moves", "moves in the workload (default 20000)"},
+        {"from-csv", "re-draw the table and plot from a pareto.csv written before (its numbers, "
+                     "not measured again; --moves as when it was measured)"}},
        runPareto},
       {"jitter",
        "rendered-pixel changes at rest, double updates and skipped renders",

@@ -322,14 +322,42 @@ void Debugger::applyActions(const ui::Actions& a) {
                                  params_.values().begin(), params_.values().end());
   std::vector<MoverSpec> movers = movers_;
   movers.front() = primary;
+  for (std::size_t k = 1; k < movers.size(); ++k) {
+    if (movers[k].name() == primary.name()) {
+      reportError("mover: " + primary.name() + " is already compared (panel " +
+                  std::to_string(k + 1) + ")");
+      ui::syncDraft(st, *sessions_.front());
+      st.error = message_;
+      return;
+    }
+  }
   try {
     // A tune re-runs from tick 0 and lands on the same tick; a plain restart goes to tick 0.
     build(*scene_, st.draft, std::move(movers), tuned ? tick() : 0);
     if (!tuned) furthest_ = 0;
     message_.clear();
+    notice_.clear();
   } catch (const Error& e) {
+    // Refused: the panel shows the values that run, with the reason beside them.
     reportError(e.what());
+    ui::syncDraft(st, *sessions_.front());
+    st.error = message_;
   }
+}
+
+void Debugger::applyOrDefer(const ui::Actions& a) {
+  // A re-run known to be slow is shown as coming ("re-running...") and done on the next frame,
+  // so the window says what it is doing before it is busy.
+  if (a.restart && states_[0].lastRerunMs >= ui::kLiveRerunMs && !pinned_) {
+    ui::Actions now = a;
+    now.restart = false;
+    applyActions(now);
+    deferred_ = true;
+    notice_ = "re-running to tick " + std::to_string(tick()) + " (the last re-run took " +
+              std::to_string(static_cast<int>(states_[0].lastRerunMs)) + " ms)...";
+    return;
+  }
+  applyActions(a);
 }
 
 bool Debugger::tune(const std::string& param, double value) {

@@ -74,7 +74,7 @@ class Debugger {
   /// Paused with nothing computing in the background: the window may wait for input.
   [[nodiscard]] bool idle() const {
     if (recording_) return recording_->idle();
-    return paused_ && divergence_.done() && (!showSweep_ || sweep_.pending() == 0);
+    return paused_ && !deferred_ && divergence_.done() && (!showSweep_ || sweep_.pending() == 0);
   }
 
  private:
@@ -88,6 +88,8 @@ class Debugger {
   void advance(double seconds);
   void select(std::optional<std::size_t> body);
   void applyActions(const ui::Actions& a);
+  /// The same, but a restart known to be slow is announced and run on the next frame.
+  void applyOrDefer(const ui::Actions& a);
   void run(Command c);
   [[nodiscard]] std::uint64_t tick() const;
   [[nodiscard]] bool compare() const { return sessions_.size() > 1; }
@@ -131,6 +133,7 @@ class Debugger {
   std::string message_;  // the last error, shown in the timeline bar
   std::string notice_;   // news that is not an error ("the scene had ended"), until the next
   bool waited_ = false;  // the last frame waited for input (its time is not a frame's cost)
+  bool deferred_ = false;  // a slow restart announced last frame, run at the next
 
   Divergence divergence_;
   SubstepSweep sweep_;

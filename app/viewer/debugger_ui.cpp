@@ -59,6 +59,12 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   if (!waited_)
     frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
   waited_ = idle();
+  if (deferred_) {
+    deferred_ = false;
+    ui::Actions restart;
+    restart.restart = true;
+    applyActions(restart);
+  }
   handleKeys(keys);
   advance(seconds);
   // Look ahead for where the movers part, a few milliseconds a frame; screenshots run it to
@@ -405,7 +411,7 @@ void Debugger::drawMain(ImVec2 origin, ImVec2 size) {
     if (compare()) drawOverlaid();
     // A zoom or pan ends following: the person took the camera.
     if (follow_ && !states_[0].frameView) follow_ = false;
-    applyActions(a);
+    applyOrDefer(a);
   }
 }
 
@@ -450,7 +456,7 @@ void Debugger::drawCompareSideBySide(ImVec2 origin, ImVec2 size) {
     inspected_ = pick->panel;
     a.select = pick->body;
   }
-  applyActions(a);
+  applyOrDefer(a);
 }
 
 void Debugger::syncCameras() {

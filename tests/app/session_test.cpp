@@ -78,3 +78,27 @@ TEST(Session, DescribesBodiesAndSolids) {
 
 }  // namespace
 }  // namespace tv::ui
+
+namespace tv::ui {
+namespace {
+
+// The comparison's verdict names the tick a mover first failed: the seam snag at 250 px/s
+// happens at tick 18 for the teleporting walker; the sweep never snags (the negative control).
+TEST(Session, RemembersTheTickItFirstFailedAndForgetsItOnRestart) {
+  const sim::SceneDef& scene = sim::findScene("seam-walk");
+  sim::Params p = scene.defaults();
+  p.set(sim::param::speed, 250.0);
+  Session naive(scene, p, parseMover("discrete"), 0);
+  Session exact(scene, p, parseMover("continuous"), 0);
+  naive.advanceTo(30, 0.0);
+  exact.advanceTo(30, 0.0);
+  ASSERT_TRUE(naive.firstFailureTick().has_value());
+  EXPECT_EQ(*naive.firstFailureTick(), 18u);
+  EXPECT_GT(naive.sim().counters().snags, 0u);
+  EXPECT_FALSE(exact.firstFailureTick().has_value());
+  naive.restart(p, parseMover("discrete"));
+  EXPECT_FALSE(naive.firstFailureTick().has_value());
+}
+
+}  // namespace
+}  // namespace tv::ui

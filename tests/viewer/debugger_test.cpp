@@ -124,6 +124,9 @@ TEST_F(DebuggerDriver, AHugeSpeedIsRefusedNamingTheLimitAndChangesNothing) {
   EXPECT_NE(dbg().message().find("the limit is 1 s per tick"), std::string::npos)
       << dbg().message();
   EXPECT_EQ(dbg().currentTick(), 2u);
+  // Nothing changed: the panel shows the speed that runs, the reason beside it.
+  EXPECT_EQ(dbg().panels()[0].draft.get("speed"), 1920.0);
+  EXPECT_NE(dbg().panels()[0].error.find("the limit is"), std::string::npos);
   const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - t0;
   // Not a timing assertion on speed: a hang would be minutes (it was 80 s and 4 GB).
   EXPECT_LT(spent.count(), 60.0);

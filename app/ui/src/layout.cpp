@@ -96,12 +96,6 @@ void drawScaleBar(ImDrawList& dl, const Camera& cam, float coveredBottom) {
   dl.AddText({(x0 + x1 - size.x) * 0.5f, y - size.y - 3.0f}, pal::kLabel, text);
 }
 
-std::uint64_t failuresOf(const sim::Counters& c) {
-  std::uint64_t n = c.tunnelled;
-  for (const auto& [label, field] : kFailures) n += c.*field;
-  return n;
-}
-
 }  // namespace
 
 std::optional<std::size_t> worldView(const char* id, Session& session, DebuggerState& st,
@@ -223,8 +217,8 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   ImGui::SetNextWindowSize({display.x, 0}, ImGuiCond_Always);
   float top = 0.0f;
   // Before / after: the first panel failed where the last did not.
-  const bool beforeAfter = n > 1 && failuresOf(sessions[0]->sim().counters()) > 0 &&
-                           failuresOf(sessions[n - 1]->sim().counters()) == 0;
+  const bool beforeAfter = n > 1 && failureCount(sessions[0]->sim().counters()) > 0 &&
+                           failureCount(sessions[n - 1]->sim().counters()) == 0;
   if (ImGui::Begin("Title", nullptr, kOverlay)) {
     ImGui::TextWrapped("%s", title.c_str());  // a narrow window wraps it, never cuts it
     // The verdict, one coloured clause per mover: what a reader should take away.
@@ -245,10 +239,15 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
         std::snprintf(num, sizeof num, ", %s %" PRIu64, label, c.*field);
         clause += num;
       }
+      // When it went wrong: the tick to step to.
+      if (const auto first = sessions[k]->firstFailureTick(); first && failureCount(c) > 0) {
+        std::snprintf(num, sizeof num, " (first at tick %" PRIu64 ")", *first);
+        clause += num;
+      }
       clause += k + 1 < n ? ";" : "";
       sameLineIfFits(clause.c_str());
       ImGui::TextColored(
-          ImGui::ColorConvertU32ToFloat4(failuresOf(c) > 0 ? pal::kBad : pal::kGood), "%s",
+          ImGui::ColorConvertU32ToFloat4(failureCount(c) > 0 ? pal::kBad : pal::kGood), "%s",
           clause.c_str());
     }
     top = ImGui::GetWindowHeight();

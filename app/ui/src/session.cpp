@@ -48,6 +48,7 @@ void Session::noteTrace() {
 void Session::tick() {
   sim_.tick();
   noteTrace();
+  noteFailure();
   interpolating_ = false;  // drawn at the tick: the accumulator's alpha no longer applies
 }
 
@@ -56,7 +57,22 @@ int Session::frame(double seconds) {
   interpolating_ = true;
   // A frame that ran several ticks leaves only its last tick's trace in the simulation.
   if (n > 0) noteTrace();
+  noteFailure();
   return n;
+}
+
+std::uint64_t failureCount(const sim::Counters& c) {
+  return c.tunnelled + c.escapes + c.overlaps + c.jitter + c.snags;
+}
+
+void Session::noteFailure() {
+  // Counts only grow as ticks run; none means the simulation was taken back before the first
+  // failure (a seek or a restart), and the tick recorded no longer holds.
+  if (failureCount(sim_.counters()) == 0) {
+    firstFailure_.reset();
+  } else if (!firstFailure_) {
+    firstFailure_ = sim_.ticks();
+  }
 }
 
 void Session::advanceTo(std::uint64_t t, double renderHz) {
@@ -81,6 +97,7 @@ void Session::advanceTo(std::uint64_t t, double renderHz) {
 
 void Session::restart(const sim::Params& params, MoverSpec mover) {
   sim_.restart(params, mover);
+  firstFailure_.reset();
   checkBody(sim_, selected_);  // the body count may have changed
   select(selected_);
   interpolating_ = false;

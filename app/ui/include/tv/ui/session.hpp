@@ -52,6 +52,10 @@ class Session {
   /// True after `frame` (render positions are interpolated), false after `tick`.
   [[nodiscard]] bool interpolating() const { return interpolating_; }
 
+  /// The tick at which this session first failed (tunnelled, escaped, overlapped, jittered or
+  /// snagged), as seen by tick() and frame(); none while its counts are all 0.
+  [[nodiscard]] std::optional<std::uint64_t> firstFailureTick() const { return firstFailure_; }
+
   /// What the world view draws now (valid until the next call that changes the session).
   [[nodiscard]] WorldPicture picture();
 
@@ -64,6 +68,7 @@ class Session {
 
  private:
   void noteTrace();
+  void noteFailure();
 
   sim::Simulation sim_;
   std::optional<std::size_t> selected_;
@@ -71,6 +76,10 @@ class Session {
   std::size_t history_ = 8;
   std::vector<Rect> renderRects_;
   bool interpolating_ = false;
+  std::optional<std::uint64_t> firstFailure_;
 };
+
+/// Tunnelled + escapes + overlaps + jitter + snags: the counts that mean a mover failed.
+[[nodiscard]] std::uint64_t failureCount(const sim::Counters& c);
 
 }  // namespace tv::ui
