@@ -1,0 +1,116 @@
+// A level's own rules. Counters (tv-run prints those that are not zero):
+//   hits       bullets stopped by a solid
+//   tunnelled  bullets that ended a move past the first solid an exact sweep of that move meets
+//   overlaps   moves that ended inside a solid
+//   jumps, landings, respawns   walkers and players, as in the platformer scene
+// `state` bits: 0 grounded, 1 facing left (as in the platformer scene).
+#include "level_rules.hpp"
+
+#include <algorithm>
+
+#include "tv/world.hpp"
+
+namespace tv::level::detail {
+namespace {
+
+constexpr std::int32_t kGrounded = 1;
+constexpr std::int32_t kFacingLeft = 2;
+
+class LevelRules final : public sim::SceneRules {
+ public:
+  LevelRules(std::vector<BodyRule> bodies, double killY)
+      : bodies_(std::move(bodies)), killY_(killY) {}
+
+  void control(sim::TickContext& ctx) const override {
+    for (std::size_t i = 0; i < ctx.bodies.size() && i < bodies_.size(); ++i) {
+      sim::Body& b = ctx.bodies[i];
+      const BodyRule& r = bodies_[i];
+      if (!b.active || (r.motion != Motion::walker && r.motion != Motion::player)) continue;
+      b.velocity.x = (b.state & kFacingLeft) != 0 ? -r.speed : r.speed;
+      if (r.motion == Motion::player && (b.state & kGrounded) != 0 &&
+          (ctx.tick + static_cast<std::uint64_t>(r.jump.phase)) %
+                  static_cast<std::uint64_t>(r.jump.every) ==
+              0) {
+        b.velocity.y = -r.jump.speed;
+        b.state &= ~kGrounded;
+        ++ctx.counters.jumps;
+      }
+    }
+  }
+
+  void afterMove(sim::TickContext& ctx, std::size_t i, Vec2 goal,
+                 std::span<const Collision> cols) const override {
+    sim::Body& b = ctx.bodies[i];
+    const BodyRule& r = bodies_[i];
+    const auto solidsOnly = [&ctx](ItemId, ItemId other) {
+      return ctx.bodyOf(other) < 0 ? response::touch : response::ignore;
+    };
+    const bool hitSolid = std::any_of(cols.begin(), cols.end(),
+                                      [&](const Collision& c) { return ctx.bodyOf(c.other) < 0; });
+    if (r.motion == Motion::bullet) {
+      // Where an exact sweep of this move says the bullet should have stopped: past it is a
+      // tunnel, whatever the mover reported.
+      const Vec2 from = ctx.previous[i];
+      const Rect startRect = b.rect.at(from);
+      const Vec2 d = goal - from;
+      const double len2 = d.x * d.x + d.y * d.y;
+      bool tunnelled = false;
+      if (len2 > 0.0) {
+        const MoveResult exact = ctx.world.project(startRect, goal, solidsOnly);
+        if (!exact.collisions.empty()) {
+          const double ti = exact.collisions.front().ti;
+          const Vec2 went = b.rect.position() - from;
+          const double along = (went.x * d.x + went.y * d.y) / len2;
+          tunnelled = along > ti + 1e-9;
+        }
+      }
+      if (tunnelled) {
+        ++ctx.counters.tunnelled;
+        if (hitSolid) ++ctx.counters.farPushOuts;
+        b.velocity = {};
+        b.active = false;
+      } else if (hitSolid) {
+        ++ctx.counters.hits;
+        b.velocity = {};
+        b.active = false;
+      }
+    }
+    if (ctx.world.anyOverlap(b.rect, b.item, solidsOnly)) ++ctx.counters.overlaps;
+    if (r.motion != Motion::walker && r.motion != Motion::player) return;
+    for (const Collision& c : cols) {
+      if (c.normal.x > 0.0) b.state &= ~kFacingLeft;
+      if (c.normal.x < 0.0) b.state |= kFacingLeft;
+    }
+    // Grounded is asked of the world (a solid right under the feet), as the platformer does.
+    const Rect feet{b.rect.x, b.rect.bottom(), b.rect.w, 1.0};
+    const bool grounded = b.velocity.y >= 0.0 && ctx.world.anyOverlap(feet, b.item, solidsOnly);
+    if (grounded && (b.state & kGrounded) == 0) ++ctx.counters.landings;
+    b.state = grounded ? (b.state | kGrounded) : (b.state & ~kGrounded);
+    if (r.motion == Motion::player && b.rect.y > killY_) {
+      ++ctx.counters.respawns;
+      b.rect = b.rect.at(r.start);
+      b.velocity = {};
+      b.state &= kFacingLeft;
+    }
+  }
+
+  bool finished(std::span<const sim::Body> bodies) const override {
+    // Done when every body is a bullet that has stopped (a level with walkers runs on).
+    for (std::size_t i = 0; i < bodies.size() && i < bodies_.size(); ++i) {
+      if (bodies_[i].motion != Motion::bullet || bodies[i].active) return false;
+    }
+    return !bodies.empty();
+  }
+
+ private:
+  std::vector<BodyRule> bodies_;
+  double killY_;
+};
+
+}  // namespace
+
+std::shared_ptr<const sim::SceneRules> makeLevelRules(std::vector<BodyRule> bodies, double killY) {
+  return std::make_shared<LevelRules>(std::move(bodies), killY);
+}
+
+}  // namespace tv::level::detail
