@@ -134,6 +134,9 @@ int run(int argc, char** argv) {
     printList();
     return 0;
   }
+  if (o.file.given()) {
+    for (const std::string& note : o.file.notes()) std::cerr << "tv-render: note: " << note << "\n";
+  }
   ui::Still still(o);
   OffscreenGl gl(o.width, o.height);
   for (const std::uint64_t tick : o.ticks) {

@@ -1,6 +1,8 @@
 #include "tv/app/scene_source.hpp"
 
+#include <cctype>
 #include <filesystem>
+#include <fstream>
 
 #include "tv/level/scene_file.hpp"
 #include "tv/level/tiled.hpp"
@@ -17,6 +19,7 @@ bool SceneSource::take(std::string_view flag, std::string_view value, std::strin
   if (flag == "solid-layer") {
     if (value.empty()) error = "--solid-layer: needs a layer name";
     solidLayers_.emplace_back(value);
+    slot_ = std::make_shared<Slot>();
     return true;
   }
   if (flag != "map" && flag != "scene-file") return false;
@@ -27,8 +30,25 @@ bool SceneSource::take(std::string_view flag, std::string_view value, std::strin
     error = "--" + std::string(flag) + ": needs a file name";
   }
   (flag == "map" ? map_ : sceneFile_) = std::string(value);
-  loaded_.reset();
+  slot_ = std::make_shared<Slot>();
   return true;
+}
+
+SceneSource SceneSource::forFile(const std::string& path) {
+  SceneSource s;
+  std::string ignored;
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  bool sceneFile = false;
+  if (ext != ".tmj") {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    sceneFile = head.find("tunnelvision-scene") != std::string::npos;
+  }
+  s.take(sceneFile ? "scene-file" : "map", path, ignored);
+  return s;
 }
 
 std::string SceneSource::describe() const {
@@ -40,7 +60,7 @@ std::string SceneSource::stem() const {
 }
 
 const SceneSource::Loaded& SceneSource::load() const {
-  if (!loaded_) {
+  if (!slot_->loaded) {
     level::Level lv;
     if (!map_.empty()) {
       level::TiledOptions options;
@@ -53,9 +73,9 @@ const SceneSource::Loaded& SceneSource::load() const {
     l->mover = lv.mover;
     l->notes = lv.notes;
     l->scene = level::makeScene(std::move(lv));
-    loaded_ = std::move(l);
+    slot_->loaded = std::move(l);
   }
-  return *loaded_;
+  return *slot_->loaded;
 }
 
 const sim::SceneDef& SceneSource::scene() const { return load().scene; }

@@ -22,6 +22,10 @@ class SceneSource {
       "  --solid-layer N  with --map: every tile and object of layer N is solid (repeatable)\n"
       "  --scene-file F   a scene file (JSON; tv-run --export-scene writes one) instead of --scene\n";
 
+  /// A file opened from a menu or dropped on a window: a map if it ends in .tmj, a scene file
+  /// if it is JSON that says "tunnelvision-scene" near its start, else a map.
+  [[nodiscard]] static SceneSource forFile(const std::string& path);
+
   /// True if `flag` (without "--") is one of ours, and then keeps `value`. Returns an error
   /// message in `error` for a second --map / --scene-file or both given.
   bool take(std::string_view flag, std::string_view value, std::string& error);
@@ -35,7 +39,8 @@ class SceneSource {
   /// --solid-layer given without --map (a mistake worth saying).
   [[nodiscard]] bool strayLayers() const { return map_.empty() && !solidLayers_.empty(); }
 
-  /// Loads the file on first use and keeps it (copies of this object share it). Throws
+  /// Loads the file on first use and keeps it (copies of this object share it, loaded before
+  /// or after the copy, and keep it alive). Throws
   /// tv::Error naming the file, the JSON path and the value.
   [[nodiscard]] const sim::SceneDef& scene() const;
   /// The mover the file suggests (a scene file's "mover", a map's `mover` property).
@@ -45,11 +50,14 @@ class SceneSource {
 
  private:
   struct Loaded;
+  struct Slot {
+    std::shared_ptr<const Loaded> loaded;
+  };
   const Loaded& load() const;
 
   std::string map_, sceneFile_;
   std::vector<std::string> solidLayers_;
-  mutable std::shared_ptr<const Loaded> loaded_;
+  std::shared_ptr<Slot> slot_ = std::make_shared<Slot>();
 };
 
 }  // namespace tv::app

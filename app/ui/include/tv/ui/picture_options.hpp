@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "tv/app/scene_source.hpp"
+
 namespace tv::ui {
 
 /// A bad command line: the message names the flag and echoes the value.
@@ -37,6 +39,7 @@ struct PictureOptions {
   int frames = 4;
   std::vector<std::string> hide, show;
   std::vector<std::pair<std::string, std::string>> params;  ///< --NAME VALUE, in order
+  app::SceneSource file;  ///< --map / --scene-file in place of --scene (then `scene` is its stem)
   /// Which flags were on the command line (a program with saved settings lets these win).
   bool sceneGiven = false, moverGiven = false, tickGiven = false, sizeGiven = false;
 };
