@@ -2,6 +2,7 @@
 #include "debugger.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "tv/error.hpp"
@@ -73,6 +74,10 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   }
   overlay_ = overlay_ || options.overlay;
   showSweep_ = options.sweep;
+  if (o.file.given()) {
+    files_.push_back(o.file);
+    for (const std::string& note : o.file.notes()) std::fprintf(stderr, "tv-debugger: note: %s\n", note.c_str());
+  }
   const sim::SceneDef& scene = ui::sceneFor(o);
   const sim::Params params = ui::paramsFor(scene, o);
   const ui::Overlays overlays = ui::overlaysFor(o);
@@ -183,6 +188,20 @@ void Debugger::loadScene(const sim::SceneDef& scene) {
     message_.clear();
   } catch (const Error& e) {
     reportError("scene '" + scene.name + "': " + e.what());
+  }
+}
+
+void Debugger::openFile(const std::string& path) {
+  const app::SceneSource file = app::SceneSource::forFile(path);
+  try {
+    const sim::SceneDef& scene = file.scene();  // throws naming the file, JSON path and value
+    files_.push_back(file);
+    build(scene, scene.defaults(), movers_, 0);
+    furthest_ = 0;
+    message_.clear();
+    for (const std::string& note : file.notes()) reportError(note);
+  } catch (const Error& e) {
+    reportError(e.what());
   }
 }
 

@@ -22,6 +22,7 @@
 #include "settings.hpp"
 #include "shortcuts.hpp"
 #include "substep_sweep.hpp"
+#include "tv/app/scene_source.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/params.hpp"
 #include "tv/sim/scene.hpp"
@@ -45,6 +46,9 @@ class Debugger {
   /// Freezes anything that reads a clock out of the picture (screenshots).
   void setPinned(bool pinned) { pinned_ = pinned; }
   void openHelp() { showHelp_ = true; }
+  /// Opens a Tiled map or a scene file (File > Open..., or dropped on the window); a bad file
+  /// is reported in the window and changes nothing.
+  void openFile(const std::string& path);
   /// Paused with nothing computing in the background: the window may wait for input.
   [[nodiscard]] bool idle() const {
     return paused_ && divergence_.done() && (!showSweep_ || sweep_.pending() == 0);
@@ -79,6 +83,11 @@ class Debugger {
   void syncCameras();
 
   const sim::SceneDef* scene_ = nullptr;
+  // Files opened this session (the command line's first): each keeps its scene alive, since
+  // scene_ and the background studies may still point at an earlier one.
+  std::vector<app::SceneSource> files_;
+  std::string pickerPath_;
+  bool focusPath_ = false;  // File > Open file...: the picker opens with its path field focused
   sim::Params params_;
   std::vector<MoverSpec> movers_;
   std::vector<std::unique_ptr<ui::Session>> sessions_;

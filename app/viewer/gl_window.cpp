@@ -26,6 +26,12 @@ void onKey(GLFWwindow* /*window*/, int key, int /*scancode*/, int action, int mo
   if (action != GLFW_RELEASE) gKeys.push_back({key, mods});
 }
 
+std::vector<std::string> gDrops;  // likewise
+
+void onDrop(GLFWwindow* /*window*/, int count, const char** paths) {
+  for (int i = 0; i < count; ++i) gDrops.emplace_back(paths[i]);
+}
+
 // Mesa's GLX loads its driver (swrast_dri.so for llvmpipe) with dlopen and unloads it when the
 // display closes. A few allocations the driver keeps for the life of the process are then
 // reported by LeakSanitizer against an unmapped address, which no suppression can name. Marking
@@ -68,6 +74,7 @@ GlWindow::GlWindow(const WindowConfig& config) {
 
   // Installed before the backend's, which then chains to it.
   glfwSetKeyCallback(window_, onKey);
+  glfwSetDropCallback(window_, onDrop);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -156,6 +163,12 @@ float GlWindow::contentScale() const {
 std::vector<KeyPress> GlWindow::takeKeys() {
   std::vector<KeyPress> out;
   out.swap(gKeys);
+  return out;
+}
+
+std::vector<std::string> GlWindow::takeDrops() {
+  std::vector<std::string> out;
+  out.swap(gDrops);
   return out;
 }
 

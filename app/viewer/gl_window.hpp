@@ -49,6 +49,8 @@ class GlWindow {
   /// The keys pressed since the last call. ImGui 1.86 only sees whether a key is down at each
   /// frame, so a tap shorter than a frame would be lost; these are queued as they come.
   [[nodiscard]] std::vector<KeyPress> takeKeys();
+  /// Paths of files dropped on the window since the last call.
+  [[nodiscard]] std::vector<std::string> takeDrops();
 
  private:
   GLFWwindow* window_ = nullptr;

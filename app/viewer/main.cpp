@@ -127,6 +127,7 @@ int interactive(const ViewerOptions& o) {
       seconds = 0.0;
     }
     ImGui::NewFrame();
+    for (const std::string& dropped : window.takeDrops()) debugger.openFile(dropped);
     debugger.frame(std::min(seconds, 0.25), window.takeKeys());
     ImGui::Render();
     window.render(ui::palette::kBackground);
