@@ -1,6 +1,6 @@
 // A level's own rules. Counters (tv-run prints those that are not zero):
 //   hits       bullets stopped by a solid
-//   tunnelled  bullets that ended a move past the first solid an exact sweep of that move meets
+//   tunnelled  bullets whose move went through a solid (or round its corner) and out again
 //   overlaps   moves that ended inside a solid
 //   jumps, landings, respawns   walkers and players, as in the platformer scene
 // `state` bits: 0 grounded, 1 facing left (as in the platformer scene).
@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "tv/sweep.hpp"
 #include "tv/world.hpp"
 
 namespace tv::level::detail {
@@ -38,7 +39,7 @@ class LevelRules final : public sim::SceneRules {
     }
   }
 
-  void afterMove(sim::TickContext& ctx, std::size_t i, Vec2 goal,
+  void afterMove(sim::TickContext& ctx, std::size_t i, Vec2 /*goal*/,
                  std::span<const Collision> cols) const override {
     sim::Body& b = ctx.bodies[i];
     const BodyRule& r = bodies_[i];
@@ -48,20 +49,24 @@ class LevelRules final : public sim::SceneRules {
     const bool hitSolid = std::any_of(cols.begin(), cols.end(),
                                       [&](const Collision& c) { return ctx.bodyOf(c.other) < 0; });
     if (r.motion == Motion::bullet) {
-      // Where an exact sweep of this move says the bullet should have stopped: past it is a
-      // tunnel, whatever the mover reported.
-      const Vec2 from = ctx.previous[i];
-      const Rect startRect = b.rect.at(from);
-      const Vec2 d = goal - from;
-      const double len2 = d.x * d.x + d.y * d.y;
+      // Tunnelled: this move's centre path crossed the interior of some solid grown by half the
+      // bullet (so the rect overlapped it on the way) and ended outside it again — through it,
+      // or round its corner — whatever the mover reported. A stop on the near face, or a push
+      // out sideways onto it, never enters that interior.
+      const Vec2 half{b.rect.w / 2, b.rect.h / 2};
+      const Vec2 c0 = ctx.previous[i] + half, c1 = b.rect.position() + half;
+      const Rect before = b.rect.at(ctx.previous[i]);
+      const double x0 = std::min(before.x, b.rect.x), y0 = std::min(before.y, b.rect.y);
+      const Rect hull{x0, y0, std::max(before.right(), b.rect.right()) - x0,
+                      std::max(before.bottom(), b.rect.bottom()) - y0};
       bool tunnelled = false;
-      if (len2 > 0.0) {
-        const MoveResult exact = ctx.world.project(startRect, goal, solidsOnly);
-        if (!exact.collisions.empty()) {
-          const double ti = exact.collisions.front().ti;
-          const Vec2 went = b.rect.position() - from;
-          const double along = (went.x * d.x + went.y * d.y) / len2;
-          tunnelled = along > ti + 1e-9;
+      for (const ItemId other : ctx.world.queryRect(hull, b.item)) {
+        if (ctx.bodyOf(other) >= 0) continue;
+        const Rect s = ctx.world.rect(other);
+        const Rect grown{s.x - half.x, s.y - half.y, s.w + b.rect.w, s.h + b.rect.h};
+        if (clipSegment(c0, c1, grown).hit) {
+          tunnelled = true;
+          break;
         }
       }
       if (tunnelled) {
