@@ -19,6 +19,9 @@ if [[ ! -x "$render" ]]; then
   exit 2
 fi
 
+# Files the arguments name (--map levels/...) are relative to the repository, as in the tests.
+cd "$root"
+
 # Same environment as the tests: no shader cache on disk, the default llvmpipe driver.
 export MESA_SHADER_CACHE_DISABLE=true
 unset GALLIUM_DRIVER LIBGL_ALWAYS_SOFTWARE
