@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "map_builder.hpp"
+#include "tv/error.hpp"
 #include "tv/level/level.hpp"
 #include "tv/level/tiled.hpp"
 #include "tv/sim/simulation.hpp"
@@ -64,6 +65,9 @@ TEST(Tiled, ALayerNamedOnTheCommandLineIsSolidAndWithoutItNothingIs) {
   TiledOptions named;
   named.solidLayers = {"ground"};
   EXPECT_EQ(solidsOf(parseTiledMap(text, "m.tmj", named)), kAllTiles);
+  TiledOptions typo;
+  typo.solidLayers = {"grond"};
+  EXPECT_THROW((void)parseTiledMap(text, "m.tmj", typo), Error) << "a layer name that is not there";
   const Level plain = parseTiledMap(text, "m.tmj");
   EXPECT_TRUE(plain.solids.empty());
   ASSERT_FALSE(plain.notes.empty());

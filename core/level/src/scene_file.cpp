@@ -223,7 +223,7 @@ Json bodyJson(const LevelBody& lb) {
     j["jump"] = jump;
   }
   j["falls"] = b.falls;
-  j["response"] = b.response < response::kBuiltinCount ? nameOf(kResponses, b.response) : "slide";
+  j["response"] = nameOf(kResponses, b.response);
   j["role"] = nameOf(kRoles, b.role);
   j["layer"] = b.layer;
   j["mask"] = b.mask;
@@ -305,6 +305,10 @@ Level exportScene(const sim::SceneDef& scene, const sim::Params& params,
   lv.solids = s.solids;
   lv.bodies.reserve(s.bodies.size());
   for (const sim::Body& b : s.bodies) {
+    if (b.response >= response::kBuiltinCount) {
+      fail(scene.name, "a body responds with a user response (id " + std::to_string(b.response) +
+                           "), which a scene file cannot name");
+    }
     LevelBody lb;
     lb.body = b;
     lv.bodies.push_back(lb);

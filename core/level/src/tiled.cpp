@@ -149,6 +149,7 @@ struct MapContext {
   double tileW = 16, tileH = 16;
   std::string encoding, compression;  // of the layer being read
   Level* level;
+  std::vector<std::string> layerNames;  // every layer seen, groups' included
 };
 
 /// The gids of one block of `w`×`h` tiles (a finite layer, or a chunk), flip flags masked.
@@ -405,6 +406,7 @@ void readLayers(MapContext& m, const JsonAt& layers, Vec2 offset, bool infinite,
   for (std::size_t i = 0; i < n; ++i) {
     const JsonAt layer = layers.at(i);
     const std::string& type = layer["type"].string();
+    if (layer.has("name")) m.layerNames.push_back(layer["name"].string());
     Vec2 at = offset;
     if (auto v = layer.find("offsetx")) at.x += v->number(-kMaxCoordinate, kMaxCoordinate);
     if (auto v = layer.find("offsety")) at.y += v->number(-kMaxCoordinate, kMaxCoordinate);
@@ -440,7 +442,7 @@ Level parseTiledMap(std::string_view text, std::string_view file, const TiledOpt
   lv.source = name;
   lv.name = std::filesystem::path(name).stem().string();
   lv.description = "Tiled map " + name;
-  MapContext m{&map, &options, readTilesets(map, options), 16, 16, "", "", &lv};
+  MapContext m{&map, &options, readTilesets(map, options), 16, 16, "", "", &lv, {}};
   m.tileW = map["tilewidth"].positive(1e4);
   m.tileH = map["tileheight"].positive(1e4);
   lv.tile = std::min(m.tileW, m.tileH);
@@ -460,8 +462,15 @@ Level parseTiledMap(std::string_view text, std::string_view file, const TiledOpt
     }
     lv.mover = v->string();
   }
-  for (const std::string& layerName : options.solidLayers) (void)layerName;
   readLayers(m, map["layers"], {}, infinite, 0);
+  for (const std::string& wanted : options.solidLayers) {
+    if (std::find(m.layerNames.begin(), m.layerNames.end(), wanted) == m.layerNames.end()) {
+      std::string names;
+      for (const std::string& n : m.layerNames) names += (names.empty() ? "" : ", ") + n;
+      fail(name, "--solid-layer '" + wanted + "': the map has no layer of that name (its layers: " +
+                     names + ")");
+    }
+  }
   if (!infinite) {
     const std::int64_t w = map["width"].whole(0, kMaxSide);
     const std::int64_t h = map["height"].whole(0, kMaxSide);
