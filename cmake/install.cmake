@@ -6,6 +6,11 @@ include(CMakePackageConfigHelpers)
 
 set(TV_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tunnelvision)
 
+set(TV_PACKAGE_NEEDS_ZLIB OFF)
+if(TARGET tv_record OR TARGET tv_level)
+  set(TV_PACKAGE_NEEDS_ZLIB ON)
+endif()
+
 # Exported names are the aliases the build tree uses: tv_core is tv::core, and so on.
 set(tv_installed tv_core tv_sim)
 set(tv_pc_libs "-ltv_sim -ltv_core")
@@ -15,6 +20,7 @@ if(TARGET tv_record)
   list(APPEND tv_installed tv_record)
   list(APPEND tv_header_dirs core/record/include)
   string(PREPEND tv_pc_libs "-ltv_record ")
+  set(tv_pc_private "zlib")  # its file checksums (CRC-32)
 endif()
 if(TARGET tv_level)
   list(APPEND tv_installed tv_level)

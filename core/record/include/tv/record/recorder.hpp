@@ -6,7 +6,7 @@
 ///   tv::Recorder rec("game.tvrec");        // throws tv::Error if the path cannot be written
 ///   world.attach(rec);                      // snapshot of the world as it is now
 ///   rec.label(player, "player", "player");  // names for the debugger (optional)
-///   fixedStep.attach(&rec);                 // a frame per rendered frame; or rec.frame()
+///   rec.attach(fixedStep);                  // a frame per rendered frame; or rec.frame()
 ///   ... play ...
 ///   world.detach();                         // or let rec go out of scope: the file is closed
 ///
@@ -20,7 +20,9 @@
 #include <string_view>
 #include <vector>
 
+#include "tv/error.hpp"  // what they throw
 #include "tv/observer.hpp"
+#include "tv/timestep.hpp"
 
 namespace tv {
 
@@ -45,10 +47,14 @@ class Recorder final : public WorldObserver {
   /// Ends the current frame (writes and flushes its chunk) and begins the next. An attached
   /// FixedStep does this at every advance.
   void frame();
+  /// `step.attach(this)`, remembered so that the destructor and close() detach it again (a
+  /// FixedStep attached by hand must be detached by hand before the recorder dies).
+  void attach(FixedStep& step);
   /// Names an item for the debugger ("player", "tile 12,4") with a category ("player",
   /// "tile", "bullet"). Recorded in the current frame; a later label replaces an earlier one.
   void label(ItemId id, std::string_view label, std::string_view category = {});
-  /// Ends the frame and finishes the file; the recorder records nothing after it.
+  /// Ends the frame, writes the end mark and closes the file; detaches from the world and the
+  /// FixedStep it was attached to. The recorder records nothing after it.
   void close();
 
   [[nodiscard]] bool ok() const { return error_.empty(); }
@@ -84,6 +90,7 @@ class Recorder final : public WorldObserver {
   void failed() override;
 
  private:
+  void writeBytes(const std::uint8_t* data, std::size_t n);
   struct Impl;  // encoder state, file, keyframe bookkeeping (core/record/src)
   std::unique_ptr<Impl> impl_;
   std::vector<std::uint8_t> memory_;

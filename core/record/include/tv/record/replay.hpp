@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tv/error.hpp"  // what they throw
 #include "tv/mover.hpp"
 #include "tv/trace.hpp"
 #include "tv/world.hpp"
@@ -79,6 +80,19 @@ struct ReplayOptions {
   /// Stop decoding at the first frame whose chunk is bad instead of throwing (the debugger
   /// opens what can be opened and shows the error); truncation is always tolerated.
   bool tolerant = false;
+  /// Most cells the replayed world's items may be registered in at once (each add, update and
+  /// keyframe is checked before the world is touched): a hostile file of huge rects is refused
+  /// instead of filling memory. Default 2^22 (about 200 MB of cell entries).
+  std::uint64_t maxCells = std::uint64_t{1} << 22;
+  /// validate() also counts, per item, the moves that ended overlapping a solid
+  /// (RecordedItem::endedOverlapping): one rect query per move.
+  bool itemStats = false;
+};
+
+/// Totals over the whole recording, known once it is open.
+struct ReplaySummary {
+  std::uint64_t frames = 0, calls = 0, moves = 0, collisions = 0, queries = 0, keyframes = 0;
+  std::uint64_t bytes = 0;  ///< file size
 };
 
 /// A move whose what-if outcome differs from the recorded one.
@@ -100,6 +114,11 @@ struct WhatIfReport {
   /// from there the recorded goals (the game's reactions) no longer make sense.
   std::optional<std::uint64_t> firstImplausibleFrame;
   std::uint64_t tunnelled = 0, overlapping = 0;
+  /// The same two checks on the recorded run itself (its moves, and with updatesAsMoves its
+  /// updates): what the what-if run is compared against.
+  std::uint64_t recordedTunnelled = 0, recordedOverlapping = 0;
+  /// Calls the what-if world refused (e.g. a pixel move over 2^24 px); they changed nothing.
+  std::uint64_t failedCalls = 0;
 };
 
 class Replay {
@@ -126,6 +145,9 @@ class Replay {
   /// The calls recorded in a frame, in order.
   [[nodiscard]] std::vector<CallInfo> calls(std::uint64_t frame) const;
   [[nodiscard]] const ReplayOptions& options() const;
+  [[nodiscard]] const ReplaySummary& summary() const;
+  /// Calls recorded in a frame (labels and FixedStep advances included).
+  [[nodiscard]] std::uint32_t callCount(std::uint64_t frame) const;
 
   // -- where it is -----------------------------------------------------------------------------
   /// Puts the world just before call `call` of `frame` (kEndOfFrame: after the frame's last
@@ -134,6 +156,8 @@ class Replay {
   [[nodiscard]] std::uint64_t frame() const;
   [[nodiscard]] std::uint32_t call() const;  ///< index of the next call in frame()
   [[nodiscard]] const World& world() const;
+  /// True once the last call of the last frame has been stepped.
+  [[nodiscard]] bool atEnd() const;
 
   /// Re-executes the next call (tracing it into `trace` when given) and compares its result
   /// with the recording. Returns the divergence, if this call diverges. Moves to the next
@@ -149,8 +173,9 @@ class Replay {
   /// What-if (options().mover set): the whole run against the recording.
   [[nodiscard]] WhatIfReport whatIf(double farAway = 64.0);
 
+  struct Impl;  // opaque: core/record/src/replay_impl.hpp
+
  private:
-  struct Impl;
   explicit Replay(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };

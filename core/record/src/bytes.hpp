@@ -1,0 +1,228 @@
+#pragma once
+// Little-endian byte writing and bounded reading for the .tvrec format (FORMAT.md): varints,
+// zigzag deltas, and doubles sent as "the predicted value", "a float32 delta" or "raw bits",
+// two bits each in a code byte ahead of up to four values.
+//
+// The reader never trusts the file: every read is bounded by the bytes left, every count is
+// checked against them before anything is allocated, and every failure throws tv::Error naming
+// the byte offset and the frame.
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tv/error.hpp"
+
+namespace tv::rec {
+
+// -- writing ----------------------------------------------------------------------------------
+
+struct Out {
+  std::vector<std::uint8_t> b;
+
+  void u8(std::uint8_t v) { b.push_back(v); }
+  void u32(std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) b.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+  void u64(std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) b.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+  }
+  void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
+  void varint(std::uint64_t v) {
+    while (v >= 0x80) {
+      b.push_back(static_cast<std::uint8_t>(v | 0x80));
+      v >>= 7;
+    }
+    b.push_back(static_cast<std::uint8_t>(v));
+  }
+  void zigzag(std::int64_t v) {
+    varint((static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63));
+  }
+  void str(std::string_view s) {
+    varint(s.size());
+    b.insert(b.end(), s.begin(), s.end());
+  }
+};
+
+[[nodiscard]] inline bool sameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+// Code of a value against two predictions and a base for the float32 delta.
+enum : std::uint8_t { kP0 = 0, kP1 = 1, kF32 = 2, kF64 = 3 };
+
+// Up to four doubles behind one code byte. Predictions may depend on values put before them
+// (the reader decodes in the same order).
+class Group {
+ public:
+  explicit Group(Out& o) : o_(o), at_(o.b.size()) { o.b.push_back(0); }
+  void put(double v, double p0, double p1, double base = 0.0) {
+    std::uint8_t code = kF64;
+    if (sameBits(v, p0)) {
+      code = kP0;
+    } else if (sameBits(v, p1)) {
+      code = kP1;
+    } else {
+      const double d = v - base;
+      if (std::isfinite(d) && std::fabs(d) <= static_cast<double>(std::numeric_limits<float>::max())) {
+        const auto f = static_cast<float>(d);
+        if (sameBits(static_cast<double>(f), d) && sameBits(base + static_cast<double>(f), v)) {
+          code = kF32;
+          std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
+          for (int i = 0; i < 4; ++i) o_.b.push_back(static_cast<std::uint8_t>(bits >> (8 * i)));
+        }
+      }
+      if (code == kF64) o_.f64(v);
+    }
+    o_.b[at_] = static_cast<std::uint8_t>(o_.b[at_] | (code << (2 * n_)));
+    ++n_;
+  }
+
+ private:
+  Out& o_;
+  std::size_t at_;
+  int n_ = 0;
+};
+
+// -- reading ----------------------------------------------------------------------------------
+
+class In {
+ public:
+  In() = default;
+  // `base`: the file offset of data[0], for messages.
+  In(const std::uint8_t* data, std::size_t size, std::uint64_t base, std::uint64_t frame)
+      : p_(data), begin_(data), end_(data + size), base_(base), frame_(frame) {}
+
+  [[nodiscard]] std::size_t left() const { return static_cast<std::size_t>(end_ - p_); }
+  [[nodiscard]] bool done() const { return p_ == end_; }
+  [[nodiscard]] std::uint64_t offset() const { return base_ + static_cast<std::uint64_t>(p_ - begin_); }
+  [[nodiscard]] std::uint64_t frame() const { return frame_; }
+  void setFrame(std::uint64_t f) { frame_ = f; }
+
+  [[noreturn]] void fail(std::string_view what) const { failAt(offset(), what); }
+  [[noreturn]] void failAt(std::uint64_t at, std::string_view what) const {
+    tv::fail("tv::Replay", "byte " + std::to_string(at) + " (frame " + std::to_string(frame_) +
+                               "): " + std::string(what));
+  }
+
+  void need(std::size_t n, std::string_view what) const {
+    if (left() < n) {
+      fail(std::string(what) + " needs " + std::to_string(n) + " bytes, only " +
+           std::to_string(left()) + " left in the chunk");
+    }
+  }
+  std::uint8_t u8(std::string_view what) {
+    need(1, what);
+    return *p_++;
+  }
+  std::uint32_t u32(std::string_view what) {
+    need(4, what);
+    std::uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v |= std::uint32_t{p_[i]} << (8 * i);
+    p_ += 4;
+    return v;
+  }
+  std::uint64_t u64(std::string_view what) {
+    need(8, what);
+    std::uint64_t v = 0;
+    for (int i = 0; i < 8; ++i) v |= std::uint64_t{p_[i]} << (8 * i);
+    p_ += 8;
+    return v;
+  }
+  // A double that must be finite (every value tv records is).
+  double f64(std::string_view what) {
+    const std::uint64_t at = offset();
+    const double v = std::bit_cast<double>(u64(what));
+    if (!std::isfinite(v)) failAt(at, std::string(what) + " is " + tv::formatNumber(v));
+    return v;
+  }
+  std::uint64_t varint(std::string_view what) {
+    const std::uint64_t at = offset();
+    std::uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      if (p_ == end_) failAt(at, std::string(what) + ": varint cut by the end of the chunk");
+      const std::uint8_t byte = *p_++;
+      if (shift == 63 && byte > 1) failAt(at, std::string(what) + ": varint over 64 bits");
+      v |= std::uint64_t{byte & 0x7Fu} << shift;
+      if ((byte & 0x80) == 0) return v;
+    }
+    failAt(at, std::string(what) + ": varint over 64 bits");
+  }
+  std::int64_t zigzag(std::string_view what) {
+    const std::uint64_t u = varint(what);
+    return static_cast<std::int64_t>(u >> 1) ^ -static_cast<std::int64_t>(u & 1);
+  }
+  // A count of things each at least `minBytes` long: refused before anything is allocated when
+  // the chunk cannot hold that many.
+  std::size_t count(std::string_view what, std::size_t minBytes) {
+    const std::uint64_t at = offset();
+    const std::uint64_t n = varint(what);
+    if (minBytes > 0 && n > left() / minBytes) {
+      failAt(at, std::string(what) + " " + std::to_string(n) + " is more than the " +
+                     std::to_string(left()) + " bytes left in the chunk can hold");
+    }
+    if (minBytes == 0 && n > (std::uint64_t{1} << 31)) {
+      failAt(at, std::string(what) + " " + std::to_string(n) + " is out of range");
+    }
+    return static_cast<std::size_t>(n);
+  }
+  std::string str(std::string_view what, std::size_t maxLength) {
+    const std::uint64_t at = offset();
+    const std::uint64_t n = varint(what);
+    if (n > maxLength) {
+      failAt(at, std::string(what) + " of " + std::to_string(n) + " bytes is longer than " +
+                     std::to_string(maxLength));
+    }
+    need(static_cast<std::size_t>(n), what);
+    std::string s(reinterpret_cast<const char*>(p_), static_cast<std::size_t>(n));
+    p_ += n;
+    return s;
+  }
+
+ private:
+  friend class GroupIn;
+  const std::uint8_t* p_ = nullptr;
+  const std::uint8_t* begin_ = nullptr;
+  const std::uint8_t* end_ = nullptr;
+  std::uint64_t base_ = 0;
+  std::uint64_t frame_ = 0;
+};
+
+class GroupIn {
+ public:
+  GroupIn(In& in, std::string_view what) : in_(in), what_(what), codes_(in.u8(what)) {}
+  double get(double p0, double p1, double base = 0.0) {
+    const auto code = static_cast<std::uint8_t>((static_cast<unsigned>(codes_) >> (2u * n_++)) & 3u);
+    const std::uint64_t at = in_.offset();
+    double v;
+    switch (code) {
+      case kP0:
+        v = p0;
+        break;
+      case kP1:
+        v = p1;
+        break;
+      case kF32:
+        v = base + static_cast<double>(std::bit_cast<float>(in_.u32(what_)));
+        break;
+      default:
+        return in_.f64(what_);
+    }
+    // A prediction or a sum can overflow where the recorder's value could not have.
+    if (!std::isfinite(v)) in_.failAt(at, std::string(what_) + " is " + tv::formatNumber(v));
+    return v;
+  }
+
+ private:
+  In& in_;
+  std::string_view what_;
+  std::uint8_t codes_;
+  unsigned n_ = 0;
+};
+
+}  // namespace tv::rec

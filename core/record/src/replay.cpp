@@ -1,0 +1,480 @@
+// Replay: open and index a recording (checksums, structure, totals), rebuild the world at any
+// frame from its keyframe, re-execute calls and compare them with the recording bit for bit, or
+// make the moves again with another mover (what-if, whatif.cpp).
+
+#include "tv/record/replay.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <cstdio>
+#include <fstream>
+#include <unordered_map>
+
+#include "format.hpp"
+#include "replay_impl.hpp"
+
+namespace tv {
+
+namespace rec {
+
+thread_local LegCursor tLegs;
+
+Leg replayedResponse(const Collision& c, Vec2 goal) {
+  LegCursor& cur = tLegs;
+  if (!cur.whatIf && cur.legs && cur.next < cur.legs->size()) return (*cur.legs)[cur.next++];
+  if (!cur.whatIf) cur.overrun = true;
+  return slideResponse(c, goal);
+}
+
+}  // namespace rec
+
+std::string_view callKindName(CallKind k) {
+  switch (k) {
+    case CallKind::add: return "add";
+    case CallKind::remove: return "remove";
+    case CallKind::update: return "update";
+    case CallKind::move: return "move";
+    case CallKind::check: return "check";
+    case CallKind::project: return "project";
+    case CallKind::queryRect: return "queryRect";
+    case CallKind::queryPoint: return "queryPoint";
+    case CallKind::querySegment: return "querySegment";
+    case CallKind::anyOverlap: return "anyOverlap";
+    case CallKind::addResponse: return "addResponse";
+    case CallKind::moverMove: return "moverMove";
+    case CallKind::batchStep: return "batchStep";
+    case CallKind::label: return "label";
+    case CallKind::advance: return "advance";
+  }
+  return "unknown";
+}
+
+std::string Divergence::report() const {
+  std::string s = "divergence at frame " + std::to_string(frame) + ", call " + std::to_string(call) +
+                  " (" + std::string(callKindName(kind));
+  if (!item.empty()) s += " " + item;
+  s += ", byte " + std::to_string(offset) + ")\n";
+  s += "  " + what + ": recorded " + expected + ", replayed " + got + "\n";
+  return s;
+}
+
+// [SECTION] opening and indexing -------------------------------------------------------------------
+
+namespace {
+
+std::uint32_t le32(const std::uint8_t* p) {
+  return std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 |
+         std::uint32_t{p[3]} << 24;
+}
+
+[[noreturn]] void fileFail(std::uint64_t at, std::uint64_t frame, const std::string& what) {
+  fail("tv::Replay", "byte " + std::to_string(at) + " (frame " + std::to_string(frame) + "): " + what);
+}
+
+}  // namespace
+
+void Replay::Impl::index() {
+  const std::size_t size = bytes.size();
+  summary.bytes = size;
+  if (size < rec::kHeaderSize) {
+    fileFail(0, 0, "the file is " + std::to_string(size) + " bytes, shorter than the 32-byte header");
+  }
+  if (std::memcmp(bytes.data(), rec::kMagic, 8) != 0) fileFail(0, 0, "not a .tvrec file (wrong magic)");
+  const unsigned major = bytes[8] | (bytes[9] << 8), minor = bytes[10] | (bytes[11] << 8);
+  if (major != rec::kVersionMajor) {
+    fileFail(8, 0, "format version " + std::to_string(major) + "." + std::to_string(minor) +
+                       " is not readable by this reader (version " +
+                       std::to_string(rec::kVersionMajor) + "." + std::to_string(rec::kVersionMinor) + ")");
+  }
+  if (le32(bytes.data() + 28) != static_cast<std::uint32_t>(::crc32(0, bytes.data(), 28))) {
+    fileFail(28, 0, "header checksum mismatch");
+  }
+  std::uint64_t cs = 0;
+  for (std::size_t i = 0; i < 8; ++i) cs |= std::uint64_t{bytes[12 + i]} << (8 * i);
+  cellSize = std::bit_cast<double>(cs);
+  if (!std::isfinite(cellSize) || !(cellSize > 0)) {
+    fileFail(12, 0, "cell size " + formatNumber(cellSize) + " is not finite and > 0");
+  }
+  keyframeEvery = le32(bytes.data() + 20);
+  if (keyframeEvery < 1 || keyframeEvery > (1u << 20)) {
+    fileFail(20, 0, "keyframe interval " + std::to_string(keyframeEvery) + " is outside [1, 2^20]");
+  }
+  if (le32(bytes.data() + 24) != 0) fileFail(24, 0, "unknown header flags");
+  model.cellSize = cellSize;
+
+  rec::Model m;
+  m.cellSize = cellSize;
+  rec::Call c;
+  WorldState ws;
+  std::size_t pos = rec::kHeaderSize;
+  bool ended = false;
+  std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>> answerCounts;
+  while (pos < size) {
+    const std::uint64_t f = frames.size();
+    if (size - pos < 8) {
+      warnings.push_back("frame " + std::to_string(f) + " at byte " + std::to_string(pos) +
+                         " is cut (" + std::to_string(size - pos) +
+                         " bytes of its chunk header): replaying up to frame " +
+                         std::to_string(f == 0 ? 0 : f - 1));
+      break;
+    }
+    const std::uint32_t len = le32(bytes.data() + pos), crc = le32(bytes.data() + pos + 4);
+    if (len == 0 && crc == rec::kEndMark) {
+      ended = true;
+      if (pos + 8 != size) {
+        const std::string what = std::to_string(size - pos - 8) + " bytes after the end mark";
+        if (!options.tolerant) fileFail(pos + 8, f, what);
+        warnings.push_back(what + " (byte " + std::to_string(pos + 8) + ") ignored");
+      }
+      break;
+    }
+    if (len > rec::kMaxChunk || len > size - pos - 8) {
+      if (len <= rec::kMaxChunk || pos + 8 + 64 > size) {
+        warnings.push_back("frame " + std::to_string(f) + " at byte " + std::to_string(pos) +
+                           " is cut (" + std::to_string(size - pos - 8) + " of its " +
+                           std::to_string(len) + " bytes): replaying up to frame " +
+                           std::to_string(f == 0 ? 0 : f - 1));
+        break;
+      }
+      const std::string what = "chunk length " + std::to_string(len) + " is over the 2^30 limit";
+      if (!options.tolerant) fileFail(pos, f, what);
+      warnings.push_back("byte " + std::to_string(pos) + " (frame " + std::to_string(f) + "): " + what + "; stopped there");
+      break;
+    }
+    const std::uint8_t* payload = bytes.data() + pos + 8;
+    if (static_cast<std::uint32_t>(::crc32(0, payload, len)) != crc) {
+      const std::string what = "checksum mismatch in frame " + std::to_string(f) + "'s chunk";
+      if (!options.tolerant) fileFail(pos, f, what);
+      warnings.push_back("byte " + std::to_string(pos) + ": " + what + "; stopped there");
+      break;
+    }
+    FrameInfo info;
+    info.offset = pos + 8;
+    info.size = len;
+    try {
+      rec::In src(payload, len, pos + 8, f);
+      info.keyframe = beginFrame(src, m, ws, f);
+      if (info.keyframe) {
+        keyframes.push_back(f);
+        ++summary.keyframes;
+        if (f == 0) {
+          for (std::uint32_t i = 0; i < ws.slots.size(); ++i) {
+            if (ws.slots[i].alive) itemFor({i, ws.slots[i].generation}, 0);
+          }
+        }
+      }
+      while (!src.done()) {
+        rec::decodeCall(src, m, c, options.maxCells);
+        ++info.calls;
+        tally(c, f, answerCounts);
+      }
+    } catch (const Error& e) {
+      if (!options.tolerant) throw;
+      warnings.push_back(std::string(e.what()) + "; stopped before that frame");
+      break;
+    }
+    frames.push_back(info);
+    pos += 8 + len;
+  }
+  if (!ended && (warnings.empty())) {
+    warnings.push_back("the recording has no end mark: the game stopped without closing it");
+  }
+  if (frames.empty()) {
+    fileFail(rec::kHeaderSize, 0, "the recording holds no whole frame");
+  }
+  summary.frames = frames.size();
+  for (auto& [id, counts] : answerCounts) {
+    const auto best = std::max_element(counts.begin(), counts.end(), [](const auto& a, const auto& b) {
+      return a.second < b.second || (a.second == b.second && a.first > b.first);
+    });
+    commonAnswer[id] = best->first;
+  }
+}
+
+bool Replay::Impl::beginFrame(rec::In& src, rec::Model& m, WorldState& ws, std::uint64_t f) {
+  const std::uint64_t at = src.offset();
+  const std::uint64_t n = src.varint("frame number");
+  if (n != f) src.failAt(at, "frame number " + std::to_string(n) + " where frame " + std::to_string(f) + " was due");
+  const std::uint8_t flags = src.u8("frame flags");
+  if (flags > 1) src.fail("frame flags " + std::to_string(flags) + " are not defined");
+  if (f == 0 && flags == 0) src.fail("frame 0 does not open with a keyframe");
+  if (flags) rec::decodeKeyframe(src, m, ws, options.maxCells);
+  return flags;
+}
+
+std::size_t Replay::Impl::itemFor(ItemId id, std::uint64_t when) {
+  auto [it, fresh] = itemIndex.try_emplace(id, items.size());
+  if (fresh) {
+    RecordedItem r;
+    r.id = id;
+    r.firstFrame = r.lastFrame = when;
+    items.push_back(r);
+  }
+  RecordedItem& r = items[it->second];
+  r.lastFrame = std::max(r.lastFrame, when);
+  return it->second;
+}
+
+void Replay::Impl::tally(const rec::Call& c, std::uint64_t f,
+                         std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers) {
+  switch (c.kind) {
+    case CallKind::label: {
+      labels[c.item] = {c.name, c.category};
+      return;
+    }
+    case CallKind::advance:
+      return;
+    case CallKind::move:
+    case CallKind::moverMove: {
+      ++summary.moves;
+      moving.insert(c.item);
+      RecordedItem& r = items[itemFor(c.item, f)];
+      ++r.moves;
+      r.hits += c.collisions.size();
+      r.maxSpeed = std::max(r.maxSpeed, length(c.position - c.start.position()));
+      break;
+    }
+    case CallKind::batchStep:
+      summary.moves += c.bodies.size();
+      for (const rec::BodyOut& b : c.bodies) {
+        moving.insert(b.item);
+        RecordedItem& r = items[itemFor(b.item, f)];
+        ++r.moves;
+        r.hits += b.count;
+        r.maxSpeed = std::max(r.maxSpeed, length(b.position - b.start.position()));
+      }
+      break;
+    case CallKind::update:
+      if (!(c.rect == c.start)) moving.insert(c.item);
+      itemFor(c.item, f);
+      break;
+    case CallKind::add:
+    case CallKind::remove:
+      itemFor(c.item, f);
+      break;
+    default:
+      ++summary.queries;
+      if (c.item.valid()) itemFor(c.item, f);
+  }
+  ++summary.calls;
+  summary.collisions += c.collisions.size();
+  for (const rec::Answer& a : c.answers) {
+    if (!a.item.valid()) continue;
+    auto& v = answers[a.item];
+    auto it = std::find_if(v.begin(), v.end(), [&](const auto& p) { return p.first == a.response; });
+    if (it == v.end()) {
+      v.emplace_back(a.response, 1);
+    } else {
+      ++it->second;
+    }
+  }
+}
+
+Replay::Replay(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Replay::Replay(Replay&&) noexcept = default;
+Replay& Replay::operator=(Replay&&) noexcept = default;
+Replay::~Replay() = default;
+
+Replay Replay::open(const std::string& path, ReplayOptions options) {
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  if (!f) fail("tv::Replay", "cannot open '" + path + "'");
+  const std::streamoff n = f.tellg();
+  if (n < 0) fail("tv::Replay", "cannot read '" + path + "'");
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(n));
+  f.seekg(0);
+  if (n > 0 && !f.read(reinterpret_cast<char*>(bytes.data()), n)) {
+    fail("tv::Replay", "cannot read '" + path + "'");
+  }
+  return fromBytes(std::move(bytes), options);
+}
+
+Replay Replay::fromBytes(std::vector<std::uint8_t> bytes, ReplayOptions options) {
+  if (options.mover) {
+    const Mover check(*options.mover);  // throws on a bad spec
+  }
+  auto impl = std::make_unique<Impl>();
+  impl->bytes = std::move(bytes);
+  impl->options = options;
+  if (options.mover) impl->whatIfMover = std::make_unique<Mover>(*options.mover);
+  impl->index();
+  // Which movers keep state a keyframe cannot hold: scan the mover definitions once.
+  impl->statefulMovers = false;
+  {
+    rec::Model m;
+    m.cellSize = impl->cellSize;
+    WorldState ws;
+    rec::Call c;
+    for (std::uint64_t f = 0; f < impl->frames.size() && !impl->statefulMovers; ++f) {
+      const FrameInfo& fi = impl->frames[f];
+      rec::In in(impl->bytes.data() + fi.offset, fi.size, fi.offset, f);
+      impl->beginFrame(in, m, ws, f);
+      while (!in.done()) {
+        rec::decodeCall(in, m, c, impl->options.maxCells);
+        if (c.kind == CallKind::moverMove && m.movers[c.mover].kind == MoverKind::pixel) {
+          impl->statefulMovers = true;
+          break;
+        }
+      }
+    }
+  }
+  Replay r(std::move(impl));
+  r.seek(0, 0);
+  return r;
+}
+
+// [SECTION] what is in it --------------------------------------------------------------------------
+
+std::uint64_t Replay::frames() const { return impl_->frames.size(); }
+double Replay::cellSize() const { return impl_->cellSize; }
+std::uint64_t Replay::fileSize() const { return impl_->bytes.size(); }
+std::span<const std::string> Replay::warnings() const { return impl_->warnings; }
+std::span<const RecordedItem> Replay::items() const {
+  for (RecordedItem& r : impl_->items) {
+    auto it = impl_->labels.find(r.id);
+    if (it != impl_->labels.end()) {
+      r.label = it->second.first;
+      r.category = it->second.second;
+    } else {
+      r.label = label(r.id);
+    }
+  }
+  return impl_->items;
+}
+const ReplayOptions& Replay::options() const { return impl_->options; }
+const ReplaySummary& Replay::summary() const { return impl_->summary; }
+std::uint32_t Replay::callCount(std::uint64_t frame) const {
+  if (frame >= impl_->frames.size()) {
+    fail("tv::Replay::callCount", "frame " + std::to_string(frame) + " is past the last (" +
+                                      std::to_string(impl_->frames.size() - 1) + ")");
+  }
+  return impl_->frames[frame].calls;
+}
+
+std::string Replay::label(ItemId id) const { return impl_->labelOf(id); }
+
+std::string Replay::Impl::labelOf(ItemId id) const {
+  if (!id.valid()) return {};
+  auto it = labels.find(id);
+  if (it != labels.end() && !it->second.first.empty()) return it->second.first;
+  return "item " + std::to_string(id.index) + "." + std::to_string(id.generation);
+}
+
+std::string Replay::category(ItemId id) const {
+  auto it = impl_->labels.find(id);
+  return it == impl_->labels.end() ? std::string{} : it->second.second;
+}
+
+namespace {
+
+std::string fmt(Vec2 v) {
+  std::string s = "(";
+  s += formatNumber(v.x);
+  s += ", ";
+  s += formatNumber(v.y);
+  s += ")";
+  return s;
+}
+
+}  // namespace
+
+std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
+  const Impl& d = *impl_;
+  if (frame >= d.frames.size()) {
+    fail("tv::Replay::calls", "frame " + std::to_string(frame) + " is past the last (" +
+                                  std::to_string(d.frames.size() - 1) + ")");
+  }
+  // Decode from the nearest keyframe: the model (not the world) gives each call's context.
+  const auto kf = std::upper_bound(d.keyframes.begin(), d.keyframes.end(), frame);
+  const std::uint64_t from = *(kf - 1);
+  rec::Model m;
+  m.cellSize = d.cellSize;
+  WorldState ws;
+  rec::Call c;
+  std::vector<CallInfo> out;
+  for (std::uint64_t f = from; f <= frame; ++f) {
+    const FrameInfo& fi = d.frames[f];
+    rec::In in(d.bytes.data() + fi.offset, fi.size, fi.offset, f);
+    const_cast<Impl&>(d).beginFrame(in, m, ws, f);
+    std::uint32_t index = 0;
+    while (!in.done()) {
+      rec::decodeCall(in, m, c, d.options.maxCells);
+      if (f == frame) {
+        CallInfo info;
+        info.kind = c.kind;
+        info.frame = f;
+        info.index = index;
+        info.item = c.item;
+        info.offset = c.offset;
+        const std::string name = std::string(callKindName(c.kind));
+        const std::string who = d.labelOf(c.item);
+        switch (c.kind) {
+          case CallKind::move:
+          case CallKind::check:
+          case CallKind::moverMove:
+          case CallKind::project:
+            info.start = c.start;
+            info.goal = c.goal;
+            info.position = c.position;
+            info.hits = static_cast<std::uint32_t>(c.collisions.size());
+            if (c.kind == CallKind::moverMove) info.mover = m.movers[c.mover].name();
+            info.summary = (c.kind == CallKind::moverMove ? info.mover + " move" : name) +
+                           (who.empty() ? "" : " " + who) + " " + fmt(c.start.position()) +
+                           " -> " + fmt(c.goal) + ": " +
+                           (info.hits ? std::to_string(info.hits) + (info.hits == 1 ? " hit" : " hits")
+                                      : "free") +
+                           (c.position == c.goal ? "" : ", ended at " + fmt(c.position));
+            break;
+          case CallKind::batchStep:
+            info.hits = static_cast<std::uint32_t>(c.collisions.size());
+            info.summary = "batch of " + std::to_string(c.bodies.size()) + " moves: " +
+                           std::to_string(info.hits) + " hits";
+            break;
+          case CallKind::queryRect:
+          case CallKind::queryPoint:
+            info.hits = static_cast<std::uint32_t>(c.found.size());
+            info.summary = name + ": " + std::to_string(info.hits) + " found";
+            break;
+          case CallKind::querySegment:
+            info.hits = static_cast<std::uint32_t>(c.segment.size());
+            info.summary = name + " " + fmt(c.goal) + " -> " + fmt(c.b) + ": " +
+                           std::to_string(info.hits) + " crossed";
+            break;
+          case CallKind::anyOverlap:
+            info.hits = c.any ? 1 : 0;
+            info.summary = name + (who.empty() ? "" : " " + who) + ": " + (c.any ? "yes" : "no");
+            break;
+          case CallKind::add:
+          case CallKind::update:
+            info.start = c.start;
+            info.position = c.rect.position();
+            info.summary = name + " " + who + " {" + formatNumber(c.rect.x) + ", " +
+                           formatNumber(c.rect.y) + ", " + formatNumber(c.rect.w) + ", " +
+                           formatNumber(c.rect.h) + "}";
+            break;
+          case CallKind::remove:
+            info.summary = name + " " + who;
+            break;
+          case CallKind::addResponse:
+            info.summary = name + " '" + c.name + "'";
+            break;
+          case CallKind::label:
+            info.summary = "label item " + std::to_string(c.item.index) + "." +
+                           std::to_string(c.item.generation) + " '" + c.name + "'" +
+                           (c.category.empty() ? "" : " (" + c.category + ")");
+            break;
+          case CallKind::advance:
+            info.summary = "advance " + formatNumber(c.frameTime) + " s: " + std::to_string(c.ticks) + " ticks";
+            break;
+        }
+        out.push_back(std::move(info));
+      }
+      ++index;
+    }
+  }
+  return out;
+}
+
+}  // namespace tv
