@@ -41,8 +41,8 @@ run(${PKG_CONFIG} --cflags --libs --static tunnelvision)
 string(STRIP "${last_output}" pc_flags)
 separate_arguments(pc_flags UNIX_COMMAND "${pc_flags}")
 separate_arguments(extra UNIX_COMMAND "${FLAGS}")
-# The pkg-config consumer builds the game without tv::record (it has its own .pc needs).
-run(${CXX} -std=c++20 ${extra} -DGAME_HAS_LEVEL ${SOURCE}/consumer/game.cpp ${pc_flags}
+# Every library is in the one .pc file (tv_record and tv_level are installed with the rest).
+run(${CXX} -std=c++20 ${extra} -DGAME_HAS_LEVEL -DGAME_HAS_RECORD ${SOURCE}/consumer/game.cpp ${pc_flags}
     -o ${WORK}/game-pkgconfig)
 run(${WORK}/game-pkgconfig)
 if(NOT last_output MATCHES "consumer: ok")

@@ -41,6 +41,23 @@ int main() {
     return 1;
   }
 #endif
+#ifdef GAME_HAS_RECORD
+  {
+    tv::World recorded(32);
+    tv::Recorder recorder;  // in memory
+    recorded.attach(recorder);
+    recorded.add({0, 100, 160, 16});
+    const tv::ItemId hero = recorded.add({40, 20, 10, 10});
+    recorded.move(hero, {40, 500});
+    recorder.frame();
+    recorded.detach();
+    if (!recorder.ok() || recorder.moves() != 1) {
+      std::printf("the recorder saw %llu moves (%s)\n",
+                  static_cast<unsigned long long>(recorder.moves()), recorder.error().c_str());
+      return 1;
+    }
+  }
+#endif
   std::puts("consumer: ok");
   return 0;
 }
