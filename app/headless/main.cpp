@@ -125,7 +125,7 @@ FrameTimes renderImage(const Options& o, ui::Still& still) {
 }
 
 int run(int argc, char** argv) {
-  const Options o = parseOptions(argc, argv);
+  Options o = parseOptions(argc, argv);
   if (o.help) {
     std::cout << kUsage;
     return 0;
@@ -136,6 +136,8 @@ int run(int argc, char** argv) {
   }
   if (o.file.given()) {
     for (const std::string& note : o.file.notes()) std::cerr << "tv-render: note: " << note << "\n";
+    // The file's own mover (a scene file's "mover", a map's mover property) unless one was given.
+    if (const auto m = o.file.mover(); m && !o.moverGiven) o.movers = {*m};
   }
   ui::Still still(o);
   OffscreenGl gl(o.width, o.height);
