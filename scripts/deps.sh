@@ -3,8 +3,8 @@
 # Usage: scripts/deps.sh [core|all]   (core: library, tools and tests; all: also the GUI/headless renderer)
 set -euo pipefail
 
-core=(g++ cmake ninja-build pkg-config googletest libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev zlib1g-dev
-      liblua5.1-0-dev lua5.1 luajit lua-busted)
+core=(g++ cmake ninja-build pkg-config googletest libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
+      nlohmann-json3-dev zlib1g-dev liblua5.1-0-dev lua5.1 luajit lua-busted)
 gui=(libimgui-dev libglfw3-dev libosmesa6-dev libstb-dev libgl-dev xvfb xauth love)
 
 want=("${core[@]}")

@@ -20,6 +20,8 @@ struct Study {
 [[nodiscard]] std::span<const Study> studies();
 
 int runTunnel(const Options& o);
+/// tunnel with --map or --scene-file: the same table on a level from a file.
+int runLevelTunnel(const Options& o);
 int runPareto(const Options& o);
 int runJitter(const Options& o);
 int runStress(const Options& o);

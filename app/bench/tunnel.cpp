@@ -143,6 +143,7 @@ std::string speedText(double v) {
 }  // namespace
 
 int runTunnel(const Options& o) {
+  if (o.has("map") || o.has("scene-file")) return runLevelTunnel(o);
   const std::vector<double> speeds =
       o.numbers("speeds", {240, 480, 720, 960, 1920, 3840, 7680, 1e5});
   const auto count =

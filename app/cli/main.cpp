@@ -3,6 +3,8 @@
 //   tv-run                         every mover on bullets-wall at 1920 px/s, side by side
 //   tv-run --list                  scenes and movers, one line each
 //   tv-run --scene NAME [--mover NAME] [--ticks N] [--PARAM VALUE ...] [--body BODY]
+//   tv-run --map level.tmj | --scene-file s.json [...]   the same for a level from a file
+//   tv-run --export-scene NAME FILE [--PARAM VALUE ...]  a built-in scene as a scene file
 //
 // Bad flags, unknown names and bad values print a message naming the flag and the value on
 // stderr and exit with code 2.
@@ -11,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -20,9 +23,11 @@
 #include <vector>
 
 #include "tv/app/flags.hpp"
+#include "tv/app/scene_source.hpp"
 #include "tv/app/vocabulary.hpp"
 #include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
+#include "tv/level/scene_file.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/sim/simulation.hpp"
@@ -50,7 +55,11 @@ const char* const kUsage =
     "      --PARAM VALUE any parameter of the scene (see --list): --speed V --size S --tile T\n"
     "                    --dt D --substep L --offset O --count N --seed S --cell C ...\n"
     "      a run whose ticks would take over a second each (a huge --speed for the substep or\n"
-    "      pixel movers) is refused, with the largest speed that fits\n";
+    "      pixel movers) is refused, with the largest speed that fits\n"
+    "  tv-run --map FILE | --scene-file FILE [...]   the same for a level from a file:\n"
+    "%s"
+    "  tv-run --export-scene NAME FILE [--mover M] [--PARAM VALUE ...]\n"
+    "      writes built-in scene NAME (with those parameters) as a scene file that runs the same\n";
 
 struct Options {
   bool list = false;
@@ -61,7 +70,15 @@ struct Options {
   std::optional<std::uint64_t> ticks;
   std::optional<std::size_t> trace;
   std::vector<std::pair<std::string, std::string>> params;  // flag name (without --), value
+  tv::app::SceneSource file;                                 // --map, --scene-file
+  std::optional<std::pair<std::string, std::string>> exportScene;  // NAME, FILE
 };
+
+std::string usage() {
+  char text[4096];
+  std::snprintf(text, sizeof text, kUsage, tv::app::SceneSource::kUsage);
+  return text;
+}
 
 double parseNumber(std::string_view flag, std::string_view text) {
   return tv::app::parseFinite<UsageError>(flag, text);
@@ -86,6 +103,12 @@ Options parseArgs(int argc, char** argv) {
     if (arg.size() < 3 || arg.substr(0, 2) != "--") {
       throw UsageError{"unexpected argument '" + std::string(arg) + "' (flags start with --)"};
     }
+    if (arg == "--export-scene") {
+      if (i + 2 >= argc) throw UsageError{"--export-scene needs a scene name and a file name"};
+      o.exportScene.emplace(argv[i + 1], argv[i + 2]);
+      i += 2;
+      continue;
+    }
     std::string name(arg.substr(2));
     std::string value;
     if (const auto eq = name.find('='); eq != std::string::npos) {
@@ -95,7 +118,11 @@ Options parseArgs(int argc, char** argv) {
       if (i + 1 >= argc) throw UsageError{"--" + name + " needs a value"};
       value = argv[++i];
     }
-    if (name == "scene") {
+    std::string fileError;
+    if (o.file.take(name, value, fileError)) {
+      if (!fileError.empty()) throw UsageError{fileError};
+      o.sceneGiven = true;
+    } else if (name == "scene") {
       o.scene = value;
       o.sceneGiven = true;
     } else if (name == "mover") {
@@ -257,17 +284,33 @@ void printTable(const tv::sim::SceneDef& scene, const tv::sim::Params& params,
   }
 }
 
+const tv::sim::SceneDef* findScene(const Options& o, const std::string& name) {
+  if (o.file.given()) {
+    const tv::sim::SceneDef& s = o.file.scene();  // throws tv::Error naming the file
+    for (const std::string& note : o.file.notes()) std::cerr << "tv-run: note: " << note << "\n";
+    return &s;
+  }
+  return tv::sim::builtinScenes().tryFind(name);
+}
+
 int run(const Options& o) {
-  const tv::sim::SceneDef* scene = tv::sim::builtinScenes().tryFind(o.scene);
+  if (o.file.strayLayers()) throw UsageError{"--solid-layer goes with --map"};
+  if (o.exportScene && o.file.given()) {
+    throw UsageError{"--export-scene writes a built-in scene; " + o.file.describe() +
+                     " is already a file"};
+  }
+  const std::string sceneName = o.exportScene ? o.exportScene->first : o.scene;
+  const tv::sim::SceneDef* scene = findScene(o, sceneName);
   if (!scene) {
     std::string valid;
     for (const std::string_view n : tv::sim::builtinScenes().names()) {
       valid += (valid.empty() ? "" : ", ") + std::string(n);
     }
-    throw UsageError{"--scene " + o.scene + ": no such scene; valid: " + valid};
+    throw UsageError{(o.exportScene ? "--export-scene " : "--scene ") + sceneName +
+                     ": no such scene; valid: " + valid};
   }
   tv::sim::Params params = scene->defaults();
-  if (!o.sceneGiven) params.set(tv::sim::param::speed, kDefaultSpeed);
+  if (!o.sceneGiven && !o.exportScene) params.set(tv::sim::param::speed, kDefaultSpeed);
   for (const auto& [name, value] : o.params) {
     if (!params.has(name)) {
       std::string valid;
@@ -281,6 +324,23 @@ int run(const Options& o) {
     } catch (const tv::Error& e) {
       throw UsageError{"--" + name + " " + value + ": " + e.what()};
     }
+  }
+  if (o.exportScene) {
+    if (o.mover) {
+      try {
+        (void)tv::parseMover(*o.mover);
+      } catch (const tv::Error& e) {
+        throw UsageError{"--mover " + *o.mover + ": " + e.what()};
+      }
+    }
+    const std::string text = tv::level::writeSceneFile(tv::level::exportScene(*scene, params, o.mover));
+    std::ofstream out(o.exportScene->second, std::ios::binary);
+    if (!(out << text) || !out.flush()) {
+      throw UsageError{"--export-scene: cannot write '" + o.exportScene->second + "'"};
+    }
+    std::cout << "wrote " << o.exportScene->second << " (" << scene->name << ", "
+              << text.size() << " bytes)\n";
+    return 0;
   }
   std::vector<std::string_view> movers;
   if (o.mover) {
@@ -323,7 +383,7 @@ int main(int argc, char** argv) {
   try {
     const Options o = parseArgs(argc, argv);
     if (o.help) {
-      std::cout << kUsage;
+      std::cout << usage();
       return 0;
     }
     if (o.list) {
@@ -332,7 +392,7 @@ int main(int argc, char** argv) {
     }
     return run(o);
   } catch (const UsageError& e) {
-    std::cerr << "tv-run: " << e.message << "\n" << kUsage;
+    std::cerr << "tv-run: " << e.message << "\n" << usage();
     return kUsageError;
   } catch (const std::exception& e) {
     std::cerr << "tv-run: " << e.what() << "\n";

@@ -161,7 +161,7 @@ int renderRecording(const ui::RecordingFlags& r, const Options& o) {
 int run(int argc, char** argv) {
   std::vector<char*> args;
   const auto recording = ui::extractRecordingFlags(argc, argv, false, args);
-  const Options o = parseOptions(static_cast<int>(args.size()), args.data());
+  Options o = parseOptions(static_cast<int>(args.size()), args.data());
   if (o.help) {
     std::cout << kUsage;
     return 0;
@@ -171,6 +171,11 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (recording) return renderRecording(*recording, o);
+  if (o.file.given()) {
+    for (const std::string& note : o.file.notes()) std::cerr << "tv-render: note: " << note << "\n";
+    // The file's own mover (a scene file's "mover", a map's mover property) unless one was given.
+    if (const auto m = o.file.mover(); m && !o.moverGiven) o.movers = {*m};
+  }
   ui::Still still(o);
   OffscreenGl gl(o.width, o.height);
   for (const std::uint64_t tick : o.ticks) {

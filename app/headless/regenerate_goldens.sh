@@ -21,9 +21,11 @@ fi
 
 # Lines that open sample.tvrec show a recording: the example platformer's first 240 frames,
 # recorded afresh into a scratch folder the pictures are rendered from (as tests/app does).
+# Files the other lines name (--map levels/...) are relative to the repository, as in the tests.
 example="${EXAMPLE:-$root/build/release/app/examples/tv-example-platformer}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+ln -s "$root/levels" "$work/levels"
 if grep -v '^#' "$list" | grep -q 'sample\.tvrec'; then
   if [[ ! -x "$example" ]]; then
     echo "$(basename "$0"): no tv-example-platformer at '$example' (build it, or set EXAMPLE)" >&2

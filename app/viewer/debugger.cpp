@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 
 #include "tv/app/work_limit.hpp"
@@ -75,6 +76,11 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   }
   overlay_ = overlay_ || options.overlay;
   showSweep_ = options.sweep;
+  if (o.file.given()) {
+    files_.push_back(o.file);
+    if (const auto m = o.file.mover(); m && !o.moverGiven) moverNames = {*m};
+    for (const std::string& note : o.file.notes()) std::fprintf(stderr, "tv-debugger: note: %s\n", note.c_str());
+  }
   const sim::SceneDef& scene = ui::sceneFor(o);
   sim::Params params = ui::paramsFor(scene, o);
   // Tuned values come back with their scene, unless the command line sets any parameter.
@@ -212,6 +218,20 @@ void Debugger::loadScene(const sim::SceneDef& scene) {
     message_.clear();
   } catch (const Error& e) {
     reportError("scene '" + scene.name + "': " + e.what());
+  }
+}
+
+void Debugger::openFile(const std::string& path) {
+  const app::SceneSource file = app::SceneSource::forFile(path);
+  try {
+    const sim::SceneDef& scene = file.scene();  // throws naming the file, JSON path and value
+    files_.push_back(file);
+    build(scene, scene.defaults(), movers_, 0);
+    furthest_ = 0;
+    message_.clear();
+    for (const std::string& note : file.notes()) reportError(note);
+  } catch (const Error& e) {
+    reportError(e.what());
   }
 }
 

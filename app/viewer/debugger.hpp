@@ -23,6 +23,7 @@
 #include "settings.hpp"
 #include "shortcuts.hpp"
 #include "substep_sweep.hpp"
+#include "tv/app/scene_source.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/params.hpp"
 #include "tv/sim/scene.hpp"
@@ -71,6 +72,9 @@ class Debugger {
   [[nodiscard]] const std::string& notice() const { return notice_; }
   [[nodiscard]] bool helpOpen() const { return showHelp_; }
 
+  /// Opens a Tiled map or a scene file (File > Open..., or dropped on the window); a bad file
+  /// is reported in the window and changes nothing.
+  void openFile(const std::string& path);
   /// Paused with nothing computing in the background: the window may wait for input.
   [[nodiscard]] bool idle() const {
     if (recording_) return recording_->idle();
@@ -110,6 +114,11 @@ class Debugger {
   [[nodiscard]] const MoverSpec& sweptMover() const;
 
   const sim::SceneDef* scene_ = nullptr;
+  // Files opened this session (the command line's first): each keeps its scene alive, since
+  // scene_ and the background studies may still point at an earlier one.
+  std::vector<app::SceneSource> files_;
+  std::string pickerPath_;
+  bool focusPath_ = false;  // File > Open file...: the picker opens with its path field focused
   sim::Params params_;
   std::vector<MoverSpec> movers_;
   std::vector<std::unique_ptr<ui::Session>> sessions_;

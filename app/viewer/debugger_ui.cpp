@@ -190,6 +190,7 @@ float Debugger::drawMenuBar() {
   if (ImGui::BeginMenu("File")) {
     item("Open scene...", Command::openScene);
     if (ImGui::MenuItem("Open recording...")) recordingDialog_.open();
+    if (ImGui::MenuItem("Open file...")) openPicker_ = focusPath_ = true;  // the picker's path field
     item("Restart", Command::restart);
     ImGui::Separator();
     item("Quit", Command::quit);
@@ -529,7 +530,7 @@ void Debugger::drawPicker() {
   ImGui::SetNextWindowSize({460, 0}, ImGuiCond_Always);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
   if (!ImGui::BeginPopupModal("Open scene", nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  if (ImGui::IsWindowAppearing() && !focusPath_) ImGui::SetKeyboardFocusHere();
   char buffer[128];
   std::snprintf(buffer, sizeof buffer, "%s", pickerFilter_.c_str());
   const bool enter =
@@ -553,8 +554,26 @@ void Debugger::drawPicker() {
     if (ImGui::Selectable(label, &s == first)) chosen = &s;
   }
   if (enter && first) chosen = first;
+  // A level from a file: a Tiled map or a scene file (files can also be dropped on the window).
+  ImGui::Separator();
+  ImGui::TextUnformatted("or a file: a Tiled map (.tmj, .json) or a scene file");
+  char path[1024];
+  std::snprintf(path, sizeof path, "%s", pickerPath_.c_str());
+  ImGui::SetNextItemWidth(-90.0f);
+  if (ImGui::IsWindowAppearing() && focusPath_) {
+    ImGui::SetKeyboardFocusHere();
+    focusPath_ = false;
+  }
+  const bool openPath = ImGui::InputTextWithHint("##path", "levels/meadow.tmj", path, sizeof path,
+                                                 ImGuiInputTextFlags_EnterReturnsTrue);
+  pickerPath_ = path;
+  ImGui::SameLine();
+  const bool openClicked = ImGui::Button("Open file");
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
-  if (chosen) {
+  if ((openPath || openClicked) && !pickerPath_.empty()) {
+    ImGui::CloseCurrentPopup();
+    openFile(pickerPath_);
+  } else if (chosen) {
     ImGui::CloseCurrentPopup();
     loadScene(*chosen);
   }

@@ -174,7 +174,14 @@ int interactive(const ViewerOptions& o) {
       pinInput();
       seconds = 0.0;
     }
-    for (const std::string& dropped : window.takeDrops()) debugger.tryOpenRecording(dropped);
+    // A recording opens in the recording view; anything else is a level (a map, a scene file).
+    for (const std::string& dropped : window.takeDrops()) {
+      if (dropped.ends_with(".tvrec")) {
+        debugger.tryOpenRecording(dropped);
+      } else {
+        debugger.openFile(dropped);
+      }
+    }
     ImGui::NewFrame();
     debugger.frame(std::min(seconds, 0.25), window.takeKeys());
     ImGui::Render();

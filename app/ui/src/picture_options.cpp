@@ -81,6 +81,7 @@ void parseView(std::string_view text, PictureOptions& o) {
 
 PictureOptions parsePictureOptions(int argc, char** argv) {
   PictureOptions o;
+  bool namedScene = false;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -110,9 +111,15 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       }
       value = argv[++i];
     }
-    if (name == "scene") {
+    std::string fileError;
+    if (o.file.take(name, value, fileError)) {
+      if (!fileError.empty()) throw UsageError{fileError};
+      if (o.file.given()) o.scene = o.file.stem();
+      o.sceneGiven = o.sceneGiven || o.file.given();
+    } else if (name == "scene") {
       o.scene = value;
       o.sceneGiven = true;
+      namedScene = true;
     } else if (name == "mover" || name == "compare") {
       if (o.moverGiven) {
         throw UsageError{"--" + name + ": give either one --mover or one --compare"};
@@ -179,6 +186,10 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       o.params.emplace_back(std::move(name), std::move(value));
     }
   }
+  if (namedScene && o.file.given()) {
+    throw UsageError{"--scene and " + o.file.describe() + ": give a built-in scene or a file, not both"};
+  }
+  if (o.file.strayLayers()) throw UsageError{"--solid-layer goes with --map"};
   if (o.ticks.size() > 1 && o.out && o.out->find("{tick}") == std::string::npos) {
     throw UsageError{"--out: with several ticks the file name needs {tick}, but got '" + *o.out +
                      "'"};

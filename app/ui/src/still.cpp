@@ -51,6 +51,7 @@ Rect viewFor(const PictureOptions& o, const std::vector<std::unique_ptr<Session>
 }  // namespace
 
 const sim::SceneDef& sceneFor(const PictureOptions& o) {
+  if (o.file.given()) return o.file.scene();  // tv::Error naming the file, path and value
   if (const sim::SceneDef* s = sim::builtinScenes().tryFind(o.scene)) return *s;
   std::string valid;
   for (const std::string_view n : sim::builtinScenes().names()) {

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "tv/app/scene_source.hpp"
+
 namespace tv::ui {
 
 /// A bad command line: the message names the flag and echoes the value.
@@ -39,6 +41,7 @@ struct PictureOptions {
   /// One line on what the picture shows, drawn under a comparison's title (--caption TEXT).
   std::string caption;
   std::vector<std::pair<std::string, std::string>> params;  ///< --NAME VALUE, in order
+  app::SceneSource file;  ///< --map / --scene-file in place of --scene (then `scene` is its stem)
   /// Which flags were on the command line (a program with saved settings lets these win).
   bool sceneGiven = false, moverGiven = false, tickGiven = false, windowGiven = false;
 };
