@@ -44,12 +44,6 @@ void onDrop(GLFWwindow* /*window*/, int count, const char** paths) {
   for (int i = 0; i < count; ++i) gDrops.emplace_back(paths[i]);
 }
 
-std::vector<std::string> gDrops;  // likewise
-
-void onDrop(GLFWwindow* /*window*/, int count, const char** paths) {
-  for (int i = 0; i < count; ++i) gDrops.emplace_back(paths[i]);
-}
-
 // Mesa's GLX loads its driver (swrast_dri.so for llvmpipe) with dlopen and unloads it when the
 // display closes. A few allocations the driver keeps for the life of the process are then
 // reported by LeakSanitizer against an unmapped address, which no suppression can name. Marking

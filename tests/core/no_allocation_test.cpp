@@ -252,7 +252,7 @@ TEST(NoAllocation, MovesOverGroundAlreadySeenAllocateNothing) {
 // the number of cells crowded *at once* has peaked: within the warm-up.
 TEST(NoAllocation, ACrowdStopsAllocatingAfterAFewHundredTicks) {
   Crowd crowd;
-  for (int t = 0; t < 300; ++t) crowd.tick();  // warm up: cells, buffers, scratch
+  for (int t = 0; t < 1000; ++t) crowd.tick();  // warm up: cells, buffers, scratch
   long allocations = 0;
   {
     CountAllocations c;
