@@ -28,8 +28,18 @@ enum Env : int {
   kIdToFn = 5,       // core ResponseId -> the Lua function of a response added from Lua
   kIdToName = 6,     // core ResponseId -> the name Lua knows it by
   kSavedCols = 7,    // during a move: collision tables a Lua response saw, by collision index
-  kEnvSize = 7
+  kKeys = 8,         // the collision tables' field names, interned once (see Key)
+  kEnvSize = 8
 };
+
+// Field names of a collision table, by index in env[kKeys]: setting fields with keys already
+// on hand skips hashing each name again, most of the cost of building bump's tables.
+enum Key : int {
+  kKeyItem = 1, kKeyOther, kKeyType, kKeyOverlaps, kKeyTi, kKeyMove, kKeyNormal, kKeyTouch,
+  kKeyItemRect, kKeyOtherRect, kKeySlide, kKeyBounce, kKeyX, kKeyY, kKeyW, kKeyH, kKeyCount
+};
+/// Pushes the table of field names (for newWorld's second upvalue).
+void pushKeys(lua_State* L);
 
 /// bump.lua's grid, kept only to count cells as bump does (countCells): cell (cx, cy), 1-based,
 /// from floor(x / size) + 1 to ceil((x + w) / size), and an emptied cell lives on until the

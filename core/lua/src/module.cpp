@@ -23,7 +23,8 @@ void pushBump(lua_State* L) {
 
   lua_createtable(L, 0, 8);
   lua_pushvalue(L, -2);
-  lua_pushcclosure(L, tvlua::guarded<tvlua::newWorld>, 1);
+  tvlua::pushKeys(L);
+  lua_pushcclosure(L, tvlua::guarded<tvlua::newWorld>, 2);
   lua_setfield(L, -2, "newWorld");
   tvlua::pushRectFunctions(L);
   lua_setfield(L, -2, "rect");
