@@ -25,6 +25,10 @@ std::span<const Study> studies() {
         {"ticks", "ticks timed per crowd run (default by size)"},
         {"crowd-only", "only the crowd table (used to compare tracing builds)", false}},
        runScale},
+      {"record",
+       "recording on vs detached on the crowd, bytes per move, replay and seek times",
+       {{"count", "crowd size (default 10000)"}},
+       runRecord},
   };
   return all;
 }
