@@ -159,7 +159,9 @@ void Recorder::frame() {
   size_ += 8 + payload.size();
   ++frames_;
   ++d.frame;
+  const std::size_t last = payload.size();
   payload.clear();
+  payload.reserve(last + last / 4 + 256);  // the next frame is likely as big: grow once
   d.enc.out.varint(d.frame);
   const bool key = d.frame % d.options.keyframeEvery == 0;
   d.enc.out.u8(key ? 1 : 0);
