@@ -89,7 +89,30 @@ double ms(const Stopwatch& sw) { return sw.seconds() * 1e3; }
 int runRecord(const Options& o) {
   const auto count = static_cast<std::int64_t>(o.has("count") ? parseCount("count", o.extra.at("count")) : 10000);
   if (count < 1 || count > 100000) throw UsageError{"--count: expected 1 to 100000"};
-  const std::uint64_t ticks = o.pick<std::uint64_t>(10, 60, 300);
+  std::uint64_t ticks = o.pick<std::uint64_t>(10, 60, 300);
+  if (o.has("ticks")) ticks = parseCount("ticks", o.extra.at("ticks"));
+  // One variant alone, for an instruction count (valgrind --tool=callgrind): the crowd moved
+  // `ticks` ticks detached, recording to memory, or recording and then validated.
+  if (o.has("variant")) {
+    const std::string v = o.extra.at("variant");
+    if (v != "detached" && v != "memory" && v != "validate") {
+      throw UsageError{"--variant: expected detached, memory or validate, but got '" + v + "'"};
+    }
+    Crowd crowd(count, o.seed);
+    Recorder rec;
+    if (v != "detached") crowd.world().attach(rec);
+    for (std::uint64_t t = 0; t < ticks; ++t) {
+      crowd.tick();
+      rec.frame();
+    }
+    crowd.world().detach();
+    if (v == "validate") {
+      Replay r = Replay::fromBytes(rec.bytes());
+      std::cout << (r.validate() ? "DIVERGED" : "ok") << "\n";
+    }
+    std::cout << v << ": " << ticks * crowd.bodies() << " moves, " << rec.size() << " bytes\n";
+    return 0;
+  }
   const int repeats = o.pick(2, 4, 7);
   const std::uint64_t seekFrames = o.pick<std::uint64_t>(10000, 100000, 100000);
   std::ostream& os = std::cout;

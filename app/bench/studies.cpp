@@ -27,7 +27,9 @@ std::span<const Study> studies() {
        runScale},
       {"record",
        "recording on vs detached on the crowd, bytes per move, replay and seek times",
-       {{"count", "crowd size (default 10000)"}},
+       {{"count", "crowd size (default 10000)"},
+        {"ticks", "crowd ticks per timed run"},
+        {"variant", "only the crowd, detached, memory or validate (for callgrind)"}},
        runRecord},
   };
   return all;
