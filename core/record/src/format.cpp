@@ -267,16 +267,22 @@ void Encoder::result(Vec2 position, Vec2 goal, const Rect& start, std::span<cons
 
 void Encoder::answerBlock(std::span<const Answer> answers, ItemId subject) {
   const bool byPair = answersByPair(answers);
-  out.varint((std::uint64_t{answers.size()} << 1) | (byPair ? 0 : 1));
+  // By pair, each pair once (answersByPair checked that repeats agree).
+  const auto repeat = [&](std::size_t i) {
+    if (!byPair) return false;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (answers[j].item == answers[i].item && answers[j].other == answers[i].other) return true;
+    }
+    return false;
+  };
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    if (!repeat(i)) ++n;
+  }
+  out.varint((n << 1) | (byPair ? 0 : 1));
   for (std::size_t i = 0; i < answers.size(); ++i) {
     const Answer& a = answers[i];
-    if (byPair) {  // each pair once
-      bool seen = false;
-      for (std::size_t j = 0; j < i && !seen; ++j) {
-        seen = answers[j].item == a.item && answers[j].other == a.other;
-      }
-      if (seen) continue;
-    }
+    if (repeat(i)) continue;
     const std::uint8_t code = answerCode(a.response);
     const bool explicitItem = a.item != subject;
     out.u8(static_cast<std::uint8_t>(code | (explicitItem ? 8 : 0)));

@@ -169,6 +169,10 @@ void Replay::Impl::index() {
       while (!src.done()) {
         rec::decodeCall(src, m, c, options.maxCells);
         ++info.calls;
+        // A pixel mover keeps sub-pixel remainders that no keyframe holds: seek from frame 0.
+        if (c.kind == CallKind::moverMove && m.movers[c.mover].kind == MoverKind::pixel) {
+          statefulMovers = true;
+        }
         tally(c, f, answerCounts);
       }
     } catch (const Error& e) {
@@ -230,6 +234,7 @@ void Replay::Impl::tally(const rec::Call& c, std::uint64_t f,
     case CallKind::move:
     case CallKind::moverMove: {
       ++summary.moves;
+      moving.insert(c.item);
       RecordedItem& r = items[itemFor(c.item, f)];
       ++r.moves;
       r.hits += c.collisions.size();
@@ -239,15 +244,19 @@ void Replay::Impl::tally(const rec::Call& c, std::uint64_t f,
     case CallKind::batchStep:
       summary.moves += c.bodies.size();
       for (const rec::BodyOut& b : c.bodies) {
+        moving.insert(b.item);
         RecordedItem& r = items[itemFor(b.item, f)];
         ++r.moves;
         r.hits += b.count;
         r.maxSpeed = std::max(r.maxSpeed, length(b.position - b.start.position()));
       }
       break;
+    case CallKind::update:
+      if (!(c.rect == c.start)) moving.insert(c.item);
+      itemFor(c.item, f);
+      break;
     case CallKind::add:
     case CallKind::remove:
-    case CallKind::update:
       itemFor(c.item, f);
       break;
     default:
@@ -295,26 +304,6 @@ Replay Replay::fromBytes(std::vector<std::uint8_t> bytes, ReplayOptions options)
   impl->options = options;
   if (options.mover) impl->whatIfMover = std::make_unique<Mover>(*options.mover);
   impl->index();
-  // Which movers keep state a keyframe cannot hold: scan the mover definitions once.
-  impl->statefulMovers = false;
-  {
-    rec::Model m;
-    m.cellSize = impl->cellSize;
-    WorldState ws;
-    rec::Call c;
-    for (std::uint64_t f = 0; f < impl->frames.size() && !impl->statefulMovers; ++f) {
-      const FrameInfo& fi = impl->frames[f];
-      rec::In in(impl->bytes.data() + fi.offset, fi.size, fi.offset, f);
-      impl->beginFrame(in, m, ws, f);
-      while (!in.done()) {
-        rec::decodeCall(in, m, c, impl->options.maxCells);
-        if (c.kind == CallKind::moverMove && m.movers[c.mover].kind == MoverKind::pixel) {
-          impl->statefulMovers = true;
-          break;
-        }
-      }
-    }
-  }
   Replay r(std::move(impl));
   r.seek(0, 0);
   return r;

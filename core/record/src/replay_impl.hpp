@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -50,6 +51,7 @@ struct Replay::Impl {
   std::unordered_map<ItemId, std::size_t> itemIndex;
   std::unordered_map<ItemId, std::pair<std::string, std::string>> labels;
   std::unordered_map<ItemId, ResponseId> commonAnswer;
+  std::unordered_set<ItemId> moving;  // items the recording moves or updates
   ReplaySummary summary;
   bool statefulMovers = false;
 
@@ -81,7 +83,10 @@ struct Replay::Impl {
   void enterFrame(std::uint64_t f, bool restore);
   void restoreWorld(const WorldState& ws);
   std::optional<Divergence> execute(MoveTrace* trace, bool compare);
-  [[nodiscard]] ResponseId fallbackAnswer(ItemId item) const;
+  /// A pair the recording never asked about (what-if): the item's most common recorded answer;
+  /// for an item with none (a body the game moves itself), other moving bodies are ignored and
+  /// everything else slides.
+  [[nodiscard]] ResponseId fallbackAnswer(ItemId item, ItemId other) const;
   [[nodiscard]] bool whatIf() const { return options.mover.has_value(); }
 };
 

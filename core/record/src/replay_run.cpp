@@ -56,7 +56,7 @@ struct ReplayFilter {
   }
   [[nodiscard]] ResponseId recordedOr(ItemId item, ItemId other) const {
     const rec::Answer* a = find(item, other);
-    return a ? a->response : d.fallbackAnswer(item);
+    return a ? a->response : d.fallbackAnswer(item, other);
   }
   ResponseId operator()(ItemId item, ItemId other) {
     if (c.answersInOrder && exact) {
@@ -69,7 +69,7 @@ struct ReplayFilter {
     if (exact && mismatch.empty()) {
       mismatch = "the filter was asked about (" + d.labelOf(item) + ", " + d.labelOf(other) + ")";
     }
-    return d.fallbackAnswer(item);
+    return d.fallbackAnswer(item, other);
   }
 };
 
@@ -103,9 +103,10 @@ void classify(const World& w, ItemId item, const Rect& S, const Rect& E, const R
 
 }  // namespace
 
-ResponseId Replay::Impl::fallbackAnswer(ItemId item) const {
+ResponseId Replay::Impl::fallbackAnswer(ItemId item, ItemId other) const {
   auto it = commonAnswer.find(item);
-  return it == commonAnswer.end() ? response::slide : it->second;
+  if (it != commonAnswer.end()) return it->second;
+  return moving.count(other) ? response::ignore : response::slide;
 }
 
 void Replay::Impl::restoreWorld(const WorldState& ws) {

@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tv/error.hpp"  // what they throw
 #include "tv/observer.hpp"
 #include "tv/timestep.hpp"
 

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tv/error.hpp"  // what they throw
 #include "tv/mover.hpp"
 #include "tv/trace.hpp"
 #include "tv/world.hpp"
