@@ -194,6 +194,11 @@ describe('world:countCells', function()
     assert.equal(2, world:countCells())
     collectgarbage('collect')
     assert.equal(1, world:countCells())
+    world:move('a', 80, 0)             -- moves and batch steps too
+    world:step({ 'a', 100, 0 })
+    assert.equal(3, world:countCells())
+    collectgarbage('collect')
+    assert.equal(1, world:countCells())
   end)
 
   it('a cell emptied and filled again is counted once', function()
