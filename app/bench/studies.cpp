@@ -35,6 +35,12 @@ std::span<const Study> studies() {
         {"batch-counts", "comma-separated sizes of the bump-crowd through tv::Batch"},
         {"bump-only", "only the bump-crowd tables", false}},
        runScale},
+      {"record",
+       "recording on vs detached on the crowd, bytes per move, replay and seek times",
+       {{"count", "crowd size (default 10000)"},
+        {"ticks", "crowd ticks per timed run"},
+        {"variant", "only the crowd, detached, memory or validate (for callgrind)"}},
+       runRecord},
   };
   return all;
 }

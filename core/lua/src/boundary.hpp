@@ -21,16 +21,18 @@ struct LuaRaised {};
 template <int (*F)(lua_State*)>
 int guarded(lua_State* L) {
   char message[512];
+  bool raised = false;
   try {
     return F(L);
   } catch (const LuaRaised&) {
-    return lua_error(L);  // nothing of F's frame is alive here; the value is on top
+    raised = true;  // the Lua error value is on top of the stack
   } catch (const std::exception& e) {
     std::snprintf(message, sizeof message, "%s", e.what());
   }
-  // Under LuaJIT a Lua error is a foreign exception: neither handler above sees it, so it
-  // propagates untouched.
-  lua_pushstring(L, message);
+  // Raised only here, once the handler has ended: a longjmp (PUC Lua) out of a catch block
+  // would leave the C++ exception alive forever. Under LuaJIT a Lua error is a foreign
+  // exception: neither handler above sees it, so it propagates untouched.
+  if (!raised) lua_pushstring(L, message);
   return lua_error(L);
 }
 

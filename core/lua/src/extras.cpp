@@ -40,7 +40,7 @@ int go(lua_State* L) {
   }
   w.last.assign(r.collisions.begin(), r.collisions.end());
   const tv::Rect after = before.at(r.position);
-  moveCells(L, 1, w, &before, &after);
+  moveCells(L, 1, w, id.index, &after);
   lua_pushnumber(L, r.position.x);
   lua_pushnumber(L, r.position.y);
   lua_pushinteger(L, static_cast<lua_Integer>(w.last.size()));
@@ -146,7 +146,7 @@ int step(lua_State* L) {
   }
   for (std::size_t i = 0; i < w.moves.size(); ++i) {
     const tv::Rect after = w.starts[i].at(w.batch.outcome(i).position);
-    moveCells(L, 1, w, &w.starts[i], &after);
+    moveCells(L, 1, w, w.moves[i].item.index, &after);
   }
   lua_pushinteger(L, static_cast<lua_Integer>(w.batch.size()));
   return 1;

@@ -114,23 +114,26 @@ bool sentinelAlive(lua_State* L, int worldIdx) {
 }
 }  // namespace
 
-void moveCells(lua_State* L, int worldIdx, LuaWorld& w, const tv::Rect* from, const tv::Rect* to) {
-  const BumpCells::Range a = from ? w.cells.of(*from) : BumpCells::Range{};
+void moveCells(lua_State* L, int worldIdx, LuaWorld& w, std::uint32_t slot, const tv::Rect* to) {
+  if (slot >= w.ranges.size()) w.ranges.resize(slot + 1);
+  BumpCells::Range& from = w.ranges[slot];
   const BumpCells::Range b = to ? w.cells.of(*to) : BumpCells::Range{};
-  if (from && to && a == b) return;  // the usual small move: nothing to do
-  if (to) w.cells.add(b);            // first, so that shared cells never empty
-  if (!from) return;
-  // Cells emptied before a collection that has run since are gone, as in bump.
-  if (!sentinelAlive(L, worldIdx)) w.cells.collect();
-  if (w.cells.remove(a)) {
-    pushEnv(L, worldIdx, kSentinel);
-    lua_rawgeti(L, -1, 1);
-    if (lua_isnil(L, -1)) {
-      lua_newtable(L);  // referenced only by the weak table: dies at the next collection
-      lua_rawseti(L, -3, 1);
+  if (to && from == b) return;  // the usual small move: nothing to do
+  if (to) w.cells.add(b);       // first, so that shared cells never empty
+  if (from.x0 <= from.x1 && from.y0 <= from.y1) {
+    // Cells emptied before a collection that has run since are gone, as in bump.
+    if (!sentinelAlive(L, worldIdx)) w.cells.collect();
+    if (w.cells.remove(from)) {
+      pushEnv(L, worldIdx, kSentinel);
+      lua_rawgeti(L, -1, 1);
+      if (lua_isnil(L, -1)) {
+        lua_newtable(L);  // referenced only by the weak table: dies at the next collection
+        lua_rawseti(L, -3, 1);
+      }
+      lua_pop(L, 2);
     }
-    lua_pop(L, 2);
   }
+  from = b;
 }
 
 std::size_t countBumpCells(lua_State* L, int worldIdx, LuaWorld& w) {
@@ -209,57 +212,79 @@ tv::ResponseId answerToResponse(lua_State* L, LuaWorld& w, int worldIdx) {
 
 namespace {
 
-void setXY(lua_State* L, const char* field, double x, double y) {
-  lua_createtable(L, 0, 2);
-  lua_pushnumber(L, x);
-  lua_setfield(L, -2, "x");
-  lua_pushnumber(L, y);
-  lua_setfield(L, -2, "y");
-  lua_setfield(L, -2, field);
+const char* const kKeyNames[kKeyCount] = {nullptr, "item", "other", "type", "overlaps", "ti",
+                                          "move", "normal", "touch", "itemRect", "otherRect",
+                                          "slide", "bounce", "x", "y", "w", "h"};
+
+// t[keys[k]] = v for the table on top, keys at `keys`.
+inline void setNumber(lua_State* L, int keys, int k, double v) {
+  lua_rawgeti(L, keys, k);
+  lua_pushnumber(L, v);
+  lua_rawset(L, -3);
 }
 
-void setRect(lua_State* L, const char* field, const tv::Rect& r) {
+void setXY(lua_State* L, int keys, int field, double x, double y) {
+  lua_rawgeti(L, keys, field);
+  lua_createtable(L, 0, 2);
+  setNumber(L, keys, kKeyX, x);
+  setNumber(L, keys, kKeyY, y);
+  lua_rawset(L, -3);
+}
+
+void setRect(lua_State* L, int keys, int field, const tv::Rect& r) {
+  lua_rawgeti(L, keys, field);
   lua_createtable(L, 0, 4);
-  lua_pushnumber(L, r.x);
-  lua_setfield(L, -2, "x");
-  lua_pushnumber(L, r.y);
-  lua_setfield(L, -2, "y");
-  lua_pushnumber(L, r.w);
-  lua_setfield(L, -2, "w");
-  lua_pushnumber(L, r.h);
-  lua_setfield(L, -2, "h");
-  lua_setfield(L, -2, field);
+  setNumber(L, keys, kKeyX, r.x);
+  setNumber(L, keys, kKeyY, r.y);
+  setNumber(L, keys, kKeyW, r.w);
+  setNumber(L, keys, kKeyH, r.h);
+  lua_rawset(L, -3);
 }
 
 }  // namespace
 
+void pushKeys(lua_State* L) {
+  lua_createtable(L, kKeyCount, 0);
+  for (int k = 1; k < kKeyCount; ++k) {
+    lua_pushstring(L, kKeyNames[k]);
+    lua_rawseti(L, -2, k);
+  }
+}
+
 void pushCollision(lua_State* L, int worldIdx, int slotToItem, int itemIdx, const tv::Collision& c,
                    bool withTarget) {
+  pushEnv(L, worldIdx, kKeys);
+  const int keys = lua_gettop(L);
   lua_createtable(L, 0, 12);
-  if (itemIdx != 0) {
-    lua_pushvalue(L, itemIdx);
-    lua_setfield(L, -2, "item");
-  } else if (c.item.valid()) {
-    lua_rawgeti(L, slotToItem, static_cast<int>(c.item.index) + 1);
-    lua_setfield(L, -2, "item");
+  if (itemIdx != 0 || c.item.valid()) {
+    lua_rawgeti(L, keys, kKeyItem);
+    if (itemIdx != 0) {
+      lua_pushvalue(L, itemIdx);
+    } else {
+      lua_rawgeti(L, slotToItem, static_cast<int>(c.item.index) + 1);
+    }
+    lua_rawset(L, -3);
   }
+  lua_rawgeti(L, keys, kKeyOther);
   lua_rawgeti(L, slotToItem, static_cast<int>(c.other.index) + 1);
-  lua_setfield(L, -2, "other");
+  lua_rawset(L, -3);
+  lua_rawgeti(L, keys, kKeyType);
   pushResponseName(L, worldIdx, c.response);
-  lua_setfield(L, -2, "type");
+  lua_rawset(L, -3);
+  lua_rawgeti(L, keys, kKeyOverlaps);
   lua_pushboolean(L, c.overlaps);
-  lua_setfield(L, -2, "overlaps");
-  lua_pushnumber(L, c.ti);
-  lua_setfield(L, -2, "ti");
-  setXY(L, "move", c.move.x, c.move.y);
-  setXY(L, "normal", c.normal.x, c.normal.y);
-  setXY(L, "touch", c.touch.x, c.touch.y);
-  setRect(L, "itemRect", c.itemRect);
-  setRect(L, "otherRect", c.otherRect);
+  lua_rawset(L, -3);
+  setNumber(L, keys, kKeyTi, c.ti);
+  setXY(L, keys, kKeyMove, c.move.x, c.move.y);
+  setXY(L, keys, kKeyNormal, c.normal.x, c.normal.y);
+  setXY(L, keys, kKeyTouch, c.touch.x, c.touch.y);
+  setRect(L, keys, kKeyItemRect, c.itemRect);
+  setRect(L, keys, kKeyOtherRect, c.otherRect);
   if (withTarget) {
-    if (c.response == tv::response::slide) setXY(L, "slide", c.target.x, c.target.y);
-    if (c.response == tv::response::bounce) setXY(L, "bounce", c.target.x, c.target.y);
+    if (c.response == tv::response::slide) setXY(L, keys, kKeySlide, c.target.x, c.target.y);
+    if (c.response == tv::response::bounce) setXY(L, keys, kKeyBounce, c.target.x, c.target.y);
   }
+  lua_remove(L, keys);
 }
 
 // [SECTION] calls into Lua -----------------------------------------------------------------------
@@ -378,10 +403,12 @@ int newWorld(lua_State* L) {
   lua_pushcfunction(L, worldToString);
   lua_setfield(L, 2, "__tostring");
   lua_createtable(L, kEnvSize, 0);  // 3: env
-  for (int i = 1; i <= kEnvSize; ++i) {
+  for (int i = 1; i < kKeys; ++i) {
     lua_newtable(L);
     lua_rawseti(L, 3, i);
   }
+  lua_pushvalue(L, lua_upvalueindex(2));
+  lua_rawseti(L, 3, kKeys);
   lua_rawgeti(L, 3, kSentinel);
   lua_createtable(L, 0, 1);
   lua_pushliteral(L, "v");

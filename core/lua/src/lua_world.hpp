@@ -28,8 +28,18 @@ enum Env : int {
   kIdToFn = 5,       // core ResponseId -> the Lua function of a response added from Lua
   kIdToName = 6,     // core ResponseId -> the name Lua knows it by
   kSavedCols = 7,    // during a move: collision tables a Lua response saw, by collision index
-  kEnvSize = 7
+  kKeys = 8,         // the collision tables' field names, interned once (see Key)
+  kEnvSize = 8
 };
+
+// Field names of a collision table, by index in env[kKeys]: setting fields with keys already
+// on hand skips hashing each name again, most of the cost of building bump's tables.
+enum Key : int {
+  kKeyItem = 1, kKeyOther, kKeyType, kKeyOverlaps, kKeyTi, kKeyMove, kKeyNormal, kKeyTouch,
+  kKeyItemRect, kKeyOtherRect, kKeySlide, kKeyBounce, kKeyX, kKeyY, kKeyW, kKeyH, kKeyCount
+};
+/// Pushes the table of field names (for newWorld's second upvalue).
+void pushKeys(lua_State* L);
 
 /// bump.lua's grid, kept only to count cells as bump does (countCells): cell (cx, cy), 1-based,
 /// from floor(x / size) + 1 to ceil((x + w) / size), and an emptied cell lives on until the
@@ -73,6 +83,7 @@ struct LuaWorld {
   std::unique_ptr<tv::Mover> mover;  // null: World::move, the exact continuous move
   tv::Batch batch;
   BumpCells cells;
+  std::vector<BumpCells::Range> ranges;  // per slot: the bump cells its item is registered in
   std::vector<tv::Collision> last;   // the last `go`'s collisions (getCollision)
   std::vector<tv::BatchMove> moves;  // the batch step's input
   // Query and project scratch, one per nesting level (a filter may query the same world).
@@ -125,9 +136,10 @@ class Busy {
 };
 /// Raises "world:<what> cannot be called while one of the world's filters or responses runs".
 void checkNotBusy(lua_State* L, LuaWorld& w, const char* what);
-/// Moves an item's registration in bump's cells (from or to may be null: add, remove). Emptied
-/// cells stay counted until the next garbage collection, as bump's weak cell tables do.
-void moveCells(lua_State* L, int worldIdx, LuaWorld& w, const tv::Rect* from, const tv::Rect* to);
+/// Moves the item in `slot` to `to` in bump's cells (null: removed); where it was is cached per
+/// slot. Emptied cells stay counted until the next garbage collection, as bump's weak cell
+/// tables do.
+void moveCells(lua_State* L, int worldIdx, LuaWorld& w, std::uint32_t slot, const tv::Rect* to);
 /// countCells: bump's cells, emptied ones included until they would have been collected.
 std::size_t countBumpCells(lua_State* L, int worldIdx, LuaWorld& w);
 

@@ -23,7 +23,8 @@ void pushBump(lua_State* L) {
 
   lua_createtable(L, 0, 8);
   lua_pushvalue(L, -2);
-  lua_pushcclosure(L, tvlua::guarded<tvlua::newWorld>, 1);
+  tvlua::pushKeys(L);
+  lua_pushcclosure(L, tvlua::guarded<tvlua::newWorld>, 2);
   lua_setfield(L, -2, "newWorld");
   tvlua::pushRectFunctions(L);
   lua_setfield(L, -2, "rect");
@@ -39,13 +40,34 @@ void pushBump(lua_State* L) {
 
 }  // namespace
 
+namespace {
+// package.loaded[name][field] when both exist (pushed), else nothing pushed and false.
+bool pushLoaded(lua_State* L, const char* name, const char* field) {
+  lua_getglobal(L, "package");
+  if (!lua_istable(L, -1)) return lua_pop(L, 1), false;
+  lua_getfield(L, -1, "loaded");
+  lua_remove(L, -2);
+  if (!lua_istable(L, -1)) return lua_pop(L, 1), false;
+  lua_getfield(L, -1, name);
+  lua_remove(L, -2);
+  if (field != nullptr && lua_istable(L, -1)) {
+    lua_getfield(L, -1, field);
+    lua_remove(L, -2);
+  }
+  if (lua_istable(L, -1)) return true;
+  lua_pop(L, 1);
+  return false;
+}
+}  // namespace
+
+// Either order of require gives one module table: tunnelvision.bump is tunnelvision's `bump`.
 TV_LUA_EXPORT int luaopen_tunnelvision_bump(lua_State* L) {
-  pushBump(L);
+  if (!pushLoaded(L, "tunnelvision", "bump")) pushBump(L);
   return 1;
 }
 
 TV_LUA_EXPORT int luaopen_tunnelvision(lua_State* L) {
-  pushBump(L);
+  if (!pushLoaded(L, "tunnelvision.bump", nullptr)) pushBump(L);
   const int bump = lua_gettop(L);
   lua_createtable(L, 0, 6);
   lua_getfield(L, bump, "newWorld");

@@ -59,7 +59,7 @@ int add(lua_State* L) {
   lua_rawset(L, map);
   lua_pushvalue(L, 2);
   lua_rawseti(L, -2, static_cast<int>(id.index) + 1);
-  moveCells(L, 1, w, nullptr, &r);
+  moveCells(L, 1, w, id.index, &r);
   if (w.recorder) labelItem(L, w, 2, id);
   lua_settop(L, 2);
   return 1;
@@ -70,7 +70,6 @@ int remove(lua_State* L) {
   checkItem(L, 2);
   const tv::ItemId id = requireItem(L, w, 1, 2, "getting its rect");
   checkNotBusy(L, w, "remove");
-  const tv::Rect r = w.world.rect(id);
   w.world.remove(id);
   pushEnv(L, 1, kItemToSlot);
   lua_pushvalue(L, 2);
@@ -79,7 +78,7 @@ int remove(lua_State* L) {
   pushEnv(L, 1, kSlotToItem);
   lua_pushnil(L);
   lua_rawseti(L, -2, static_cast<int>(id.index) + 1);
-  moveCells(L, 1, w, &r, nullptr);
+  moveCells(L, 1, w, id.index, nullptr);
   return 0;
 }
 
@@ -93,7 +92,7 @@ int update(lua_State* L) {
   checkNotBusy(L, w, "update");
   if (r == old) return 0;
   w.world.update(id, r);
-  moveCells(L, 1, w, &old, &r);
+  moveCells(L, 1, w, id.index, &r);
   return 0;
 }
 
@@ -242,7 +241,7 @@ int moveOrCheck(lua_State* L, bool commit) {
   }
   if (commit) {
     const tv::Rect after = before.at(r.position);
-    moveCells(L, 1, w, &before, &after);
+    moveCells(L, 1, w, m.id.index, &after);
   }
   lua_pushnumber(L, r.position.x);
   lua_pushnumber(L, r.position.y);

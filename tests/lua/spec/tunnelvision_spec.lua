@@ -209,3 +209,14 @@ describe('determinism', function()
     assert.equal(16, #run())
   end)
 end)
+
+describe('require', function()
+  it('gives one bump table whichever module is required first', function()
+    package.loaded['tunnelvision'], package.loaded['tunnelvision.bump'] = nil, nil
+    local bump = require 'tunnelvision.bump'
+    assert.equal(bump, require('tunnelvision').bump)
+    package.loaded['tunnelvision'], package.loaded['tunnelvision.bump'] = nil, nil
+    local tvm = require 'tunnelvision'
+    assert.equal(tvm.bump, require('tunnelvision.bump'))
+  end)
+end)
