@@ -99,15 +99,11 @@ void Recorder::writeBytes(const std::uint8_t* data, std::size_t n) {
 
 void Recorder::attached(const World& world) {
   Impl& d = *impl_;
-  if (d.started) {
-    // One recording, one world: a second attach would need a second header.
-    if (d.world != &world) {
-      if (error_.empty()) error_ = "tv::Recorder: attached to a second world; it records only the first";
-      d.stopped = true;
-    }
+  if (d.started || d.stopped) {
+    // One recording, one attachment: another would need another header.
+    if (error_.empty()) error_ = "tv::Recorder: attached again after it was closed; make a new Recorder";
     return;
   }
-  if (d.stopped) return;
   d.world = const_cast<World*>(&world);  // attach() took the world non-const
   d.started = true;
   rec::Out h;
