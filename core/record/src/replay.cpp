@@ -18,18 +18,6 @@
 
 namespace tv {
 
-namespace rec {
-
-thread_local LegCursor tLegs;
-
-Leg replayedResponse(const Collision& c, Vec2 goal) {
-  LegCursor& cur = tLegs;
-  if (!cur.whatIf && cur.legs && cur.next < cur.legs->size()) return (*cur.legs)[cur.next++];
-  if (!cur.whatIf) cur.overrun = true;
-  return slideResponse(c, goal);
-}
-
-}  // namespace rec
 
 std::string_view callKindName(CallKind k) {
   switch (k) {
@@ -83,7 +71,8 @@ void Replay::Impl::index() {
     fileFail(0, 0, "the file is " + std::to_string(size) + " bytes, shorter than the 32-byte header");
   }
   if (std::memcmp(bytes.data(), rec::kMagic, 8) != 0) fileFail(0, 0, "not a .tvrec file (wrong magic)");
-  const unsigned major = bytes[8] | (bytes[9] << 8), minor = bytes[10] | (bytes[11] << 8);
+  const unsigned major = unsigned{bytes[8]} | (unsigned{bytes[9]} << 8u);
+  const unsigned minor = unsigned{bytes[10]} | (unsigned{bytes[11]} << 8u);
   if (major != rec::kVersionMajor) {
     fileFail(8, 0, "format version " + std::to_string(major) + "." + std::to_string(minor) +
                        " is not readable by this reader (version " +
