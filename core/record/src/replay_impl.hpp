@@ -73,8 +73,9 @@ struct Replay::Impl {
   void index();
   bool beginFrame(rec::In& in, rec::Model& m, WorldState& ws, std::uint64_t f);
   std::size_t itemFor(ItemId id, std::uint64_t frame);
-  void tally(const rec::Call& c, std::uint64_t f,
-             std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers);
+  void tally(
+      const rec::Call& c, std::uint64_t f,
+      std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers);
   [[nodiscard]] std::string labelOf(ItemId id) const;
 
   void enterFrame(std::uint64_t f, bool restore);
