@@ -870,11 +870,11 @@ void World::restore(const WorldState& s) {
 
 void World::attach(WorldObserver& observer) {
   detach();
-  observer_.set(&observer);
+  observer_.set(&observer, this);
   try {
     observer.attached(*this);
   } catch (...) {
-    observer_.set(nullptr);
+    observer_.set(nullptr, nullptr);
     throw;
   }
 }
@@ -882,7 +882,7 @@ void World::attach(WorldObserver& observer) {
 void World::detach() {
   WorldObserver* o = observer_.get();
   if (o == nullptr) return;
-  observer_.set(nullptr);
+  observer_.set(nullptr, nullptr);
   o->detached(*this);
 }
 

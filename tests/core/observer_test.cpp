@@ -76,6 +76,8 @@ class Log final : public tv::WorldObserver {
     lines.push_back("  leg to x=" + tv::formatNumber(leg.goal.x));
   }
   void failed() override { lines.push_back("  failed"); }
+  void sourceGone(const void* source) override { gone.push_back(source); }
+  std::vector<const void*> gone;
 
  private:
   static std::string name(ItemId id) { return id.valid() ? std::to_string(id.index) : "-"; }
@@ -192,6 +194,28 @@ TEST(Observer, ACopyOfAnAttachedWorldReportsToNoOne) {
   World copy = w;
   EXPECT_EQ(copy.observer(), nullptr);
   EXPECT_EQ(w.observer(), &log);
+}
+
+// A game may destroy its world and its FixedStep before the recorder: the observer is told, so
+// it never calls a dangling pointer; a copy of either was never attached and tells nothing.
+TEST(Observer, HearsWhenItsWorldOrFixedStepIsDestroyed) {
+  Log log;
+  const void* worldAt = nullptr;
+  const void* stepAt = nullptr;
+  {
+    World w(16);
+    tv::FixedStep step;
+    w.attach(log);
+    step.attach(&log);
+    worldAt = &w;
+    stepAt = &step;
+    { const World copy = w; }
+    { const tv::FixedStep copy = step; }
+    EXPECT_TRUE(log.gone.empty());
+  }
+  ASSERT_EQ(log.gone.size(), 2u);
+  EXPECT_EQ(log.gone[0], stepAt);  // members die in reverse order of declaration
+  EXPECT_EQ(log.gone[1], worldAt);
 }
 
 // [SECTION] state and restore ------------------------------------------------------------------

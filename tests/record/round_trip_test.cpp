@@ -191,3 +191,30 @@ TEST(RoundTrip, StepGoesCallByCallAndFillsTheTrace) {
 }
 
 }  // namespace
+
+namespace {
+
+// The game tears down its world and FixedStep before the recorder (members declared in that
+// order, or a recorder kept for its report): the recorder finishes the file without touching
+// them, and what it wrote replays.
+TEST(RoundTrip, ARecorderOutlivingItsWorldAndFixedStepFinishesTheFile) {
+  tv::Recorder rec;
+  {
+    World w(16);
+    tv::FixedStep step;
+    rec.attach(step);
+    w.attach(rec);
+    const ItemId m = w.add({0, 0, 8, 8});
+    (void)w.add({32, 0, 16, 16});
+    for (int f = 0; f < 5; ++f) {
+      (void)step.advance(1.0 / 60.0);
+      (void)w.move(m, w.rect(m).position() + Vec2{4, 0});
+    }
+  }
+  rec.close();
+  EXPECT_TRUE(rec.ok()) << rec.error();
+  tv::Replay replay = tv::Replay::fromBytes(rec.bytes());
+  EXPECT_FALSE(replay.validate().has_value());
+}
+
+}  // namespace

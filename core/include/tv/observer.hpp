@@ -72,6 +72,10 @@ class WorldObserver {
   /// The outermost call threw: forget the answers reported since it began.
   virtual void failed() = 0;
 
+  /// The World or FixedStep at `source`, which this observer was attached to, is being
+  /// destroyed: forget it, and call nothing on it from now on.
+  virtual void sourceGone(const void* source) { (void)source; }
+
   /// True inside an outermost call: the calls it makes are not reported on their own.
   [[nodiscard]] bool busy() const { return depth_ > 0; }
 
@@ -101,5 +105,33 @@ class WorldObserver {
  private:
   int depth_ = 0;
 };
+
+namespace detail {
+
+/// How a World or FixedStep holds its observer: a copy reports to no one (it is a new world),
+/// and the observer hears when its source is destroyed, so it never calls a dangling one.
+class ObserverLink {
+ public:
+  ObserverLink() = default;
+  ObserverLink(const ObserverLink&) {}
+  ObserverLink& operator=(const ObserverLink&) { return *this; }
+  ~ObserverLink() {
+    if (p_) p_->sourceGone(owner_);
+  }
+  void set(WorldObserver* p, const void* owner) {
+    p_ = p;
+    owner_ = owner;
+  }
+  [[nodiscard]] WorldObserver* get() const { return p_; }
+  WorldObserver* operator->() const { return p_; }
+  WorldObserver& operator*() const { return *p_; }
+  explicit operator bool() const { return p_ != nullptr; }
+
+ private:
+  WorldObserver* p_ = nullptr;
+  const void* owner_ = nullptr;
+};
+
+}  // namespace detail
 
 }  // namespace tv

@@ -32,7 +32,7 @@ class FixedStep {
   /// Frames longer than maxFrameTime, whose excess was dropped.
   [[nodiscard]] std::uint64_t clampedFrames() const { return clamped_; }
   /// Reports every advance to `observer` (a recorder marks a frame there); null to stop.
-  void attach(WorldObserver* observer) { observer_ = observer; }
+  void attach(WorldObserver* observer) { observer_.set(observer, this); }
 
  private:
   double step_;
@@ -41,7 +41,7 @@ class FixedStep {
   std::uint64_t ticks_ = 0;
   std::uint64_t frames_ = 0;
   std::uint64_t clamped_ = 0;
-  WorldObserver* observer_ = nullptr;
+  detail::ObserverLink observer_;  // a copy reports to no one
 };
 
 /// Render position between two physics states.

@@ -259,22 +259,7 @@ class World {
     ResponseFn fn;
   };
   std::vector<NamedResponse> responses_;
-  // A copy of a world is a new world: it reports to no one.
-  class ObserverLink {
-   public:
-    ObserverLink() = default;
-    ObserverLink(const ObserverLink&) {}
-    ObserverLink& operator=(const ObserverLink&) { return *this; }
-    WorldObserver* get() const { return p_; }
-    void set(WorldObserver* p) { p_ = p; }
-    WorldObserver* operator->() const { return p_; }
-    WorldObserver& operator*() const { return *p_; }
-    explicit operator bool() const { return p_ != nullptr; }
-
-   private:
-    WorldObserver* p_ = nullptr;
-  };
-  ObserverLink observer_;
+  detail::ObserverLink observer_;  // a copy of a world reports to no one
 
   // Scratch reused by every move (hence `mutable`: check and project are logically const).
   mutable std::vector<std::uint32_t> stamp_;

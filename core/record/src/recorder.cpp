@@ -185,6 +185,13 @@ void Recorder::label(ItemId id, std::string_view label, std::string_view categor
   d.enc.label(id, label, category);
 }
 
+void Recorder::sourceGone(const void* source) {
+  // The game destroyed its world or FixedStep first: nothing to detach from any more.
+  Impl& d = *impl_;
+  if (source == d.world) d.world = nullptr;
+  if (source == d.step) d.step = nullptr;
+}
+
 void Recorder::close() {
   Impl& d = *impl_;
   if (d.step) {

@@ -91,6 +91,7 @@ class Recorder final : public WorldObserver {
   void filtered(ItemId item, ItemId other, ResponseId answer) override;
   void responded(const Collision& c, Vec2 goal, const Leg& leg) override;
   void failed() override;
+  void sourceGone(const void* source) override;
 
  private:
   void writeBytes(const std::uint8_t* data, std::size_t n);
