@@ -161,10 +161,11 @@ TEST(HitOrder, RandomFacesAFewUlpsApartAreHitNearestFirstAndNeverEndedIn) {
         o.maxResponses = budget;
         const tv::MoveResult r = w.move(m, goal, tv::Filter::all(resp), o);
         ++cases;
-        const std::string what = "case " + std::to_string(i) + " response " +
-                                 std::to_string(resp) + " maxResponses " + std::to_string(budget);
+        const std::string what = "case " + std::to_string(i) + " response " + std::to_string(resp) +
+                                 " maxResponses " + std::to_string(budget);
         ASSERT_FALSE(r.collisions.empty()) << what;
-        const ItemId expected = fn == ff ? first : ((positive ? fn < ff : fn > ff) ? nearId : farId);
+        const ItemId expected =
+            fn == ff ? first : ((positive ? fn < ff : fn > ff) ? nearId : farId);
         ASSERT_EQ(r.collisions[0].other, expected) << what;
         if (resp != tv::response::cross) {
           ASSERT_FALSE(tv::overlaps(w.rect(m), w.rect(nearId))) << what;

@@ -26,17 +26,20 @@ TEST(Range, ScenesBeyondTwoToThe500AreRefusedNamingTheValue) {
   EXPECT_THROW(World(1e154), tv::Error);
   EXPECT_THROW(World(1e307), tv::Error);
   World w(1e140);  // a legal cell size whose grid reaches 4.5e155
-  expectRejected(w, {"tv::World::add", "x must be within ±2^500", "1e+155"},
-                 [&] { (void)w.add({1e155, -1e154, 1e154, 2e154}); });
-  expectRejected(w, {"tv::World::add", "w must be within ±2^500", "1e+154"},
-                 [&] { (void)w.add({0, 0, 1e154, 1e154}); });
+  expectRejected(w, {"tv::World::add", "x must be within ±2^500", "1e+155"}, [&] {
+    (void)w.add({1e155, -1e154, 1e154, 2e154});
+  });
+  expectRejected(w, {"tv::World::add", "w must be within ±2^500", "1e+154"}, [&] {
+    (void)w.add({0, 0, 1e154, 1e154});
+  });
   const ItemId m = w.add({0, 0, 1e141, 1e141});
-  expectRejected(w, {"tv::World::move", "goal.x", "1.5e+155"},
-                 [&] { (void)w.move(m, {1.5e155, 0}); });
-  expectRejected(w, {"tv::World::project", "x must be within", "-1.5e+151"},
-                 [&] { (void)w.project({-1.5e151, 0, 1, 1}, {0, 0}); });
-  expectRejected(w, {"tv::World::queryPoint", "-1e+151"},
-                 [&] { (void)w.queryPoint({-1e151, 0}); });
+  expectRejected(w, {"tv::World::move", "goal.x", "1.5e+155"}, [&] {
+    (void)w.move(m, {1.5e155, 0});
+  });
+  expectRejected(w, {"tv::World::project", "x must be within", "-1.5e+151"}, [&] {
+    (void)w.project({-1.5e151, 0, 1, 1}, {0, 0});
+  });
+  expectRejected(w, {"tv::World::queryPoint", "-1e+151"}, [&] { (void)w.queryPoint({-1e151, 0}); });
   // A move from -1.5e308 to 1.5e308 (a displacement of infinity) cannot even be set up.
   World big(0x1p500);
   expectRejected(big, {"-1.5e+308"}, [&] { (void)big.add({-1.5e308, 0, 1, 1}); });
@@ -74,15 +77,18 @@ TEST(Range, AtTheTopOfTheRangeHitsAreStillOrderedExactly) {
 
 // A response of the user's that throws the mover past 2^500 is refused by name, before anything
 // moves.
-tv::Leg farAway(const tv::Collision& c, Vec2) { return {c.touch, {1e151, 0}}; }
+tv::Leg farAway(const tv::Collision& c, Vec2) {
+  return {c.touch, {1e151, 0}};
+}
 
 TEST(Range, AResponseLegBeyondTheRangeIsRefused) {
   World w(0x1p500);
   (void)w.add({1e150, -1e149, 1e149, 2e149});
   const ItemId m = w.add({0, 0, 1e148, 1e148});
   const tv::ResponseId far = w.addResponse("far", &farAway);
-  expectRejected(w, {"response 'far'", "1e+151", "2^500"},
-                 [&] { (void)w.move(m, {1.5e150, 0}, tv::Filter::all(far)); });
+  expectRejected(w, {"response 'far'", "1e+151", "2^500"}, [&] {
+    (void)w.move(m, {1.5e150, 0}, tv::Filter::all(far));
+  });
 }
 
 }  // namespace

@@ -28,10 +28,10 @@ using tv::World;
 //     \           x from 1.25e-6 to 7.1e-6, y from 1e9 - 6e-7 to 1e9 - 9.3e-6
 TEST(SweptWalk, CellsAFewUlpsOfTheCoordinatesWideAreStillAllVisited) {
   World w(7.4685078275118712e-07);
-  (void)w.add({2.2734653758344361e-06, 999999999.99999797, 3.6933845261853752e-09,
-               4.0978293996286454e-06});
-  const ItemId m = w.add({1.2512294323018248e-06, 999999999.9999994, 1.4946155242873129e-08,
-                          1.5102090485111685e-07});
+  (void)w.add(
+      {2.2734653758344361e-06, 999999999.99999797, 3.6933845261853752e-09, 4.0978293996286454e-06});
+  const ItemId m = w.add(
+      {1.2512294323018248e-06, 999999999.9999994, 1.4946155242873129e-08, 1.5102090485111685e-07});
   const Vec2 g{7.0984202029503844e-06, 999999999.9999907};
   // The bounds broad phase (every cell of the bounding box) is the reference.
   const tv::MoveResult bounds = w.check(m, g, {}, {tv::BroadPhase::bounds});

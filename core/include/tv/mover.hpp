@@ -26,8 +26,11 @@ enum class MoverKind : std::uint8_t {
   sweep,
   /// The move cut into pieces no longer than `maxStep`, each made by the inner mover (discrete
   /// or sweep) from where the last one ended — the usual patch. With a discrete inner step it
-  /// stops tunnelling only while maxStep < the thinnest obstacle + mover; cost grows with
-  /// speed / maxStep, and the pieces add rounding that a single exact sweep does not have.
+  /// tunnels once maxStep >= the thinnest obstacle + mover, and even with short pieces it ends
+  /// past walls: a piece landing near a wall's end is pushed out sideways past it, and as every
+  /// piece keeps the move's direction, a shot pushed back climbs the face and goes round the
+  /// end (tv-bench tunnel measures it). Cost grows with speed / maxStep, and the pieces add
+  /// rounding that a single exact sweep does not have.
   substep,
   /// One exact swept move whose broad phase visits only the cells the moving rect crosses:
   /// cost follows path length, not bounding-box area. Never tunnels; zero error.

@@ -12,7 +12,9 @@
 ///   ordinary hits before exact corner hits, then by the order in which items were added —
 ///   never by address or hash order;
 /// - the steady-state move path allocates nothing (buffers are kept and reused);
-/// - bad input throws tv::Error naming the value and leaves the world unchanged.
+/// - bad input throws tv::Error naming the value and leaves the world unchanged;
+/// - all of this within the range of geometry.hpp: coordinates, sizes and goals within ±2^500,
+///   cell sizes in [2^-485, 2^500], rects with an interior; beyond it input is refused.
 /// Not thread-safe: queries reuse internal scratch buffers.
 
 #include <cstddef>
