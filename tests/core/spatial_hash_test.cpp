@@ -212,5 +212,26 @@ TEST(WorldCells, MemoryReturnsToBaselineAfterABodyCrossesAMillionEmptyCells) {
   EXPECT_LE(w.memoryBytes(), baseline + 1024);
 }
 
+TEST(WorldCells, ACopyIsDeepAndMovesExactlyAsTheOriginal) {
+  World a(16);
+  for (int i = 0; i < 20; ++i) a.add({i * 16.0, 64, 16, 16});
+  const ItemId m = a.add({0, 0, 8, 8});
+  World b = a;
+  const MoveResult ra = a.move(m, {100, 70});
+  const Vec2 pa = ra.position;
+  const MoveResult rb = b.move(m, {100, 70});
+  EXPECT_EQ(pa, rb.position);
+  EXPECT_EQ(a.stateHash(), b.stateHash());
+  // Changing one leaves the other alone, cells included.
+  b.remove(m);
+  EXPECT_TRUE(a.has(m));
+  EXPECT_EQ(a.queryRect({0, 0, 400, 200}, {}).size(), 20u + 1u);
+  World c(32);
+  c = std::move(b);
+  b = a;  // a moved-from world can be assigned again
+  EXPECT_EQ(b.stateHash(), a.stateHash());
+  EXPECT_EQ(c.countCells(), 20u);
+}
+
 }  // namespace
 }  // namespace tv
