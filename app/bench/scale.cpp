@@ -269,7 +269,7 @@ struct BumpRow {
 
 BumpRow bumpRow(std::int64_t n, double cell, CrowdFilter filter, std::uint64_t seed,
                 std::uint64_t ticks, int repeats, bool batched) {
-  BumpCrowd crowd({bumpWorldSide(n), n, cell, seed});
+  BumpCrowd crowd({n, cell, seed});
   const auto tick = [&] { batched ? crowd.tickBatched(filter) : crowd.tick(filter); };
   for (int t = 0; t < 3; ++t) tick();  // warm: cells and buffers reach their steady sizes
   BumpRow row{n, cell, filter, 0, -1, crowd.bytesPerItem()};
