@@ -74,8 +74,7 @@ void BumpCrowd::tickBatched(CrowdFilter filter) {
   };
   const Filter f = filter == CrowdFilter::tiles ? Filter(tilesOnly) : Filter::all(response::slide);
   batchMoves_.clear();
-  for (const Mover& m : movers_)
-    batchMoves_.push_back({m.item, m.position + m.velocity * dt_});
+  for (const Mover& m : movers_) batchMoves_.push_back({m.item, m.position + m.velocity * dt_});
   batch_.step(world_, batchMoves_, f);
   for (std::size_t i = 0; i < movers_.size(); ++i) {
     const BatchOutcome out = batch_.outcome(i);

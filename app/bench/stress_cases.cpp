@@ -424,8 +424,7 @@ void many(std::vector<StressCase>& out, Mode mode) {
          return CaseResult{"heap growth " + std::to_string(growth) + " B after reaching x = " +
                                formatNumber(16.0 * static_cast<double>(crossed)) +
                                " and coming back; cells read " + std::to_string(cells1) +
-                               " (before: " +
-                               std::to_string(cells0) + ")",
+                               " (before: " + std::to_string(cells0) + ")",
                            growth <= 0 && (!kTraceCompiledIn || cells1 == cells0)};
        }});
 }

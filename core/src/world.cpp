@@ -99,8 +99,8 @@ void World::validateRect(const Rect& r, std::string_view where) const {
 
 void World::validateGoal(const Rect& r, Vec2 goal, std::string_view where) const {
   // The common case in one test: a finite far edge means a finite goal (w and h are finite).
-  if (const Rect g = r.at(goal); std::isfinite(g.right()) && std::isfinite(g.bottom()) &&
-                                 grid_.fits(g)) [[likely]] {
+  if (const Rect g = r.at(goal);
+      std::isfinite(g.right()) && std::isfinite(g.bottom()) && grid_.fits(g)) [[likely]] {
     return;
   }
   requireFinite(where, "goal.x", goal.x);

@@ -254,8 +254,10 @@ std::vector<Outcome> batchStep(World& world, std::span<const BatchMove> moves, F
 
   std::vector<Outcome> out;
   for (const Body& b : bodies_) {
-    out.push_back({b.rect.position(), std::vector<Collision>(collisions_.begin() + static_cast<std::ptrdiff_t>(b.first),
-                                                           collisions_.begin() + static_cast<std::ptrdiff_t>(b.first + b.count))});
+    out.push_back({b.rect.position(),
+                   std::vector<Collision>(
+                       collisions_.begin() + static_cast<std::ptrdiff_t>(b.first),
+                       collisions_.begin() + static_cast<std::ptrdiff_t>(b.first + b.count))});
   }
   return out;
 }

@@ -58,8 +58,8 @@ TEST(BatchReference, MatchesTheAllPairsSearchBitForBitOnRandomScenes) {
     }
     // Each scene under every built-in response, and a filter that makes some pairs ignore
     // each other (one side only, or both).
-    for (const ResponseId resp : {response::touch, response::slide, response::bounce,
-                                  response::cross}) {
+    for (const ResponseId resp :
+         {response::touch, response::slide, response::bounce, response::cross}) {
       const auto filter = [resp](ItemId a, ItemId b) {
         return (a.index + b.index) % 5 == 0 ? response::ignore : resp;
       };
@@ -68,8 +68,8 @@ TEST(BatchReference, MatchesTheAllPairsSearchBitForBitOnRandomScenes) {
       batch.step(mine, moves, filter);
       const std::vector<reference::Outcome> ref = reference::batchStep(theirs, moves, filter);
       ASSERT_EQ(batch.size(), ref.size());
-      const std::string where = "seed " + std::to_string(seed) + " response " +
-                                std::to_string(resp);
+      const std::string where =
+          "seed " + std::to_string(seed) + " response " + std::to_string(resp);
       for (std::size_t i = 0; i < ref.size(); ++i) {
         const BatchOutcome out = batch.outcome(i);
         EXPECT_EQ(out.position, ref[i].position) << where << " body " << i;

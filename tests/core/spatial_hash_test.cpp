@@ -48,8 +48,9 @@ std::vector<std::uint32_t> slotsIn(const SpatialHash& h, Cell c) {
 void expectMatches(const SpatialHash& h, const std::map<std::uint32_t, Rect>& items) {
   std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::uint32_t>> expected;
   for (const auto& [slot, r] : items) {
-    Grid::forEachCell(h.grid().cellsHolding(r),
-                      [&](Cell c) { expected[{c.x, c.y}].push_back(slot); });
+    Grid::forEachCell(h.grid().cellsHolding(r), [&](Cell c) {
+      expected[{c.x, c.y}].push_back(slot);
+    });
   }
   std::size_t cells = 0;
   h.forEachOccupiedCell([&](Cell c, std::size_t n) {

@@ -282,10 +282,11 @@ SceneSetup buildBumpCrowd(const Params& p) {
   const Common c = readCommon(p);
   const double t = c.tile;
   const auto side = static_cast<std::int64_t>(bumpCrowdSide(c.count) / t);
-  if (side < 4) sceneFail("bump-crowd", "tile " + formatNumber(t) + " leaves fewer than 4 tiles a side");
+  if (side < 4)
+    sceneFail("bump-crowd", "tile " + formatNumber(t) + " leaves fewer than 4 tiles a side");
   if (c.size >= t) {
-    sceneFail("bump-crowd", "size must be < tile (" + formatNumber(t) + "), but was " +
-                                formatNumber(c.size));
+    sceneFail("bump-crowd",
+              "size must be < tile (" + formatNumber(t) + "), but was " + formatNumber(c.size));
   }
   SceneSetup s;
   s.cellSize = c.cell;
@@ -316,7 +317,8 @@ SceneSetup buildBumpCrowd(const Params& p) {
   for (std::int64_t y = 0; y < side; ++y) {
     for (std::int64_t x = 0; x < side; ++x) {
       if (solid[static_cast<std::size_t>(y * side + x)] == 0) continue;
-      const Rect r{c.offset + static_cast<double>(x) * t, c.offset + static_cast<double>(y) * t, t, t};
+      const Rect r{c.offset + static_cast<double>(x) * t, c.offset + static_cast<double>(y) * t, t,
+                   t};
       s.solids.push_back({r});
       (void)placed.add(r);
     }
@@ -325,7 +327,8 @@ SceneSetup buildBumpCrowd(const Params& p) {
   const std::int64_t attempts = 1000 + 100 * c.count;
   for (std::int64_t tried = 0; static_cast<std::int64_t>(s.bodies.size()) < c.count; ++tried) {
     if (tried == attempts) {
-      sceneFail("bump-crowd", "could not place " + std::to_string(c.count) + " movers (try a smaller count or size)");
+      sceneFail("bump-crowd", "could not place " + std::to_string(c.count) +
+                                  " movers (try a smaller count or size)");
     }
     const Rect r{rng.uniform(lo, hi), rng.uniform(lo, hi), c.size, c.size};
     if (placed.anyOverlap(r)) continue;
@@ -358,7 +361,8 @@ SceneDef bumpCrowd() {
   def.name = "bump-crowd";
   def.description = "bump.lua's benchmark: movers sliding among random platforms, 30% solid";
   def.params = commonParams(d);
-  def.params.push_back(intParam(std::string(kMeet), "1: movers slide against each other; 0: they pass through", 0, 0, 1));
+  def.params.push_back(intParam(
+      std::string(kMeet), "1: movers slide against each other; 0: they pass through", 0, 0, 1));
   def.camera = [](const Params& p) {
     const Common c = readCommon(p);
     const double side = std::min(bumpCrowdSide(c.count), 800.0);
