@@ -1,11 +1,9 @@
 #pragma once
-// bump-crowd: bump.lua's own benchmark scene, so that our figures compare with the numbers its
-// users know. A square world of 16×16 static tiles: a solid one-tile border, plus random
-// horizontal platforms 3–12 tiles long (clipped inside the border) until 30% of the grid is
-// solid, one item per tile. N 8×8 movers at random free spots (overlapping no tile and no other
-// mover), each with a random direction and a speed uniform in [30, 240] px/s. Every tick
-// (dt 1/60) each mover makes one `World::move` with `slide` and flips the velocity component of
-// each collision normal it reports (a component already leaving the obstacle is kept).
+// bump-crowd: bump.lua's own benchmark scene (tv::sim's "bump-crowd" builds the layout: a
+// 2000 px world of 16×16 tiles, 30% solid, up to 10^4 movers; 6320 px beyond), driven the way
+// bump.lua's benchmark drives it: every tick (dt 1/60) each 8×8 mover makes one `World::move`
+// with `slide` and flips the velocity component of each collision normal it reports (a
+// component already leaving the obstacle is kept) — no Simulation, no rules, no snapshots.
 //
 // Two filters: `tiles` (movers ignore each other) and `all` (movers also slide against each
 // other). `tickBatched` moves the same bodies through one tv::Batch instead (moving versus
@@ -25,14 +23,10 @@ enum class CrowdFilter : std::uint8_t { tiles, all };
 [[nodiscard]] std::string filterName(CrowdFilter f);
 
 struct BumpCrowdSpec {
-  double worldSide = 2000.0;  ///< px; 6320 for 10^5 movers at the same density
   std::int64_t movers = 1000;
   double cellSize = 32.0;
   std::uint64_t seed = 1;
 };
-
-/// bump.lua's side for N movers: 2000 px up to 10^4, 6320 px (ten times the area) beyond.
-[[nodiscard]] double bumpWorldSide(std::int64_t movers);
 
 class BumpCrowd {
  public:
@@ -61,6 +55,7 @@ class BumpCrowd {
   static Vec2 flip(Vec2 v, std::span<const Collision> collisions);
 
   World world_;
+  double dt_ = 1.0 / 60.0;
   std::vector<Mover> movers_;
   std::vector<BatchMove> batchMoves_;
   Batch batch_;

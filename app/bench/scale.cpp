@@ -257,7 +257,6 @@ double simMsPerTick(const SlowScene& s, const std::string& mover, std::uint64_t 
   return msPerTick([&] { sim.tick(); }, ticks, repeats);
 }
 
-
 // [SECTION] bump-crowd ----------------------------------------------------------------------------
 
 struct BumpRow {
@@ -269,7 +268,7 @@ struct BumpRow {
 
 BumpRow bumpRow(std::int64_t n, double cell, CrowdFilter filter, std::uint64_t seed,
                 std::uint64_t ticks, int repeats, bool batched) {
-  BumpCrowd crowd({bumpWorldSide(n), n, cell, seed});
+  BumpCrowd crowd({n, cell, seed});
   const auto tick = [&] { batched ? crowd.tickBatched(filter) : crowd.tick(filter); };
   for (int t = 0; t < 3; ++t) tick();  // warm: cells and buffers reach their steady sizes
   BumpRow row{n, cell, filter, 0, -1, crowd.bytesPerItem()};
@@ -289,8 +288,8 @@ std::vector<std::int64_t> wholeNumbers(const Options& o, std::string_view flag,
   std::vector<std::int64_t> out;
   for (const double c : o.numbers(flag, std::move(fallback))) {
     if (!(c >= 1 && c <= max && c == std::floor(c))) {
-      throw UsageError{"--" + std::string(flag) + ": " + sig3(c) + " is not a whole number in [1, " +
-                       sig3(max) + "]"};
+      throw UsageError{"--" + std::string(flag) + ": " + sig3(c) +
+                       " is not a whole number in [1, " + sig3(max) + "]"};
     }
     out.push_back(static_cast<std::int64_t>(c));
   }
@@ -302,12 +301,11 @@ std::string verdict(double measured, double target) {
 }
 
 void runBumpCrowd(const Options& o, int repeats, std::ostream& os) {
-  const std::vector<std::int64_t> counts =
-      wholeNumbers(o, "bump-counts", o.pick<std::vector<double>>({1000}, {1000, 10000},
-                                                                 {1000, 10000, 100000}),
-                   100000);
-  const std::vector<double> cells = o.numbers("cells", o.pick<std::vector<double>>(
-                                                           {32}, {16, 32, 64}, {16, 32, 64}));
+  const std::vector<std::int64_t> counts = wholeNumbers(
+      o, "bump-counts", o.pick<std::vector<double>>({1000}, {1000, 10000}, {1000, 10000, 100000}),
+      100000);
+  const std::vector<double> cells =
+      o.numbers("cells", o.pick<std::vector<double>>({32}, {16, 32, 64}, {16, 32, 64}));
   for (const double c : cells) {
     if (!(c >= 1 && c <= 4096)) throw UsageError{"--cells: " + sig3(c) + " is not in [1, 4096]"};
   }
@@ -360,8 +358,8 @@ void runBumpCrowd(const Options& o, int repeats, std::ostream& os) {
   for (const auto& [n, target] : targets) {
     const BumpRow* t = best(n, CrowdFilter::tiles);
     if (!t) continue;
-    os << "Target: bump-crowd " << n << " `tiles` ≤ " << sig3(target) << " ms/tick: "
-       << fixed(t->ms, 3) << " ms at cell " << fixed(t->cell, 0) << " ("
+    os << "Target: bump-crowd " << n << " `tiles` ≤ " << sig3(target)
+       << " ms/tick: " << fixed(t->ms, 3) << " ms at cell " << fixed(t->cell, 0) << " ("
        << verdict(t->ms, target) << ")";
     if (const BumpRow* a = best(n, CrowdFilter::all)) {
       os << "; `all` " << fixed(a->ms, 3) << " ms, " << fixed(a->ms / t->ms, 2)

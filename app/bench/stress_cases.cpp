@@ -402,6 +402,38 @@ void many(std::vector<StressCase>& out, Mode mode) {
                                std::to_string(first.index) + ")",
                            w.count() == count0 && growth <= 0 && last.index == first.index};
        }});
+  const std::int64_t crossed = mode == Mode::quick ? 100000 : 1000000;
+  out.push_back(
+      {"a body moving across " + std::to_string(crossed) + " empty 16 px cells, 4 px a move",
+       "heap back to baseline (cells are recycled); a long move afterwards reads as few cells as "
+       "before the trip",
+       [crossed] {
+         World w(16);
+         for (int i = 0; i < 100; ++i) w.add({i * 16.0, 0, 16, 16});
+         const ItemId body = w.add({0, 32, 8, 8});
+         const ItemId probe = w.add({0, 64, 8, 8});
+         (void)w.move(body, {4, 32});  // the move path's scratch, once
+         const auto cellsRead = [&] {
+           MoveTrace t;
+           MoveOptions o;
+           o.trace = &t;
+           (void)w.check(probe, {2546, 2610}, {}, o);  // a 3600 px diagonal over empty ground
+           return t.cells.size();
+         };
+         const std::size_t cells0 = cellsRead();
+         const std::size_t heap0 = heapInUse();
+         for (std::int64_t i = 1; i <= crossed * 4; ++i) {
+           (void)w.move(body, {4.0 * static_cast<double>(i), 32});
+         }
+         for (int i = 0; i < 1000; ++i) (void)w.move(body, {4.0 * static_cast<double>(i % 2), 32});
+         const auto growth = static_cast<long long>(heapInUse()) - static_cast<long long>(heap0);
+         const std::size_t cells1 = cellsRead();
+         return CaseResult{"heap growth " + std::to_string(growth) + " B after reaching x = " +
+                               formatNumber(16.0 * static_cast<double>(crossed)) +
+                               " and coming back; cells read " + std::to_string(cells1) +
+                               " (before: " + std::to_string(cells0) + ")",
+                           growth <= 0 && (!kTraceCompiledIn || cells1 == cells0)};
+       }});
 }
 
 // [SECTION] time steps ----------------------------------------------------------------------------

@@ -24,7 +24,8 @@ std::span<const Study> studies() {
        runJitter},
       {"stress", "numerical stability: a table of cases; exits 1 if any fails", {}, runStress},
       {"scale",
-       "bump-crowd and crowd ms per tick against N, tv::Batch, move cost against length, adaptive vs discrete",
+       "bump-crowd and crowd ms per tick against N, tv::Batch, move cost against length, adaptive "
+       "vs discrete",
        {{"counts", "comma-separated crowd sizes (default 100,1000,10000,100000)"},
         {"movers", "comma-separated movers for the crowd (default sweep,continuous,adaptive)"},
         {"ticks", "ticks timed per crowd run (default by size)"},

@@ -136,13 +136,23 @@ void Batch::step(World& world, std::span<const BatchMove> moves, Filter filter, 
           bestStatic = r.collisions.front();
         }
       }
-      for (std::size_t i0 = 0; i0 < bodies_.size(); ++i0) {
-        const Rect hull0 = unite(bodies_[i0].rect, bodies_[i0].rect.at(bodies_[i0].goal));
-        for (std::size_t j0 = i0 + 1; j0 < bodies_.size(); ++j0) {
-          const Body& b0 = bodies_[j0];
-          if (!overlaps(hull0, unite(b0.rect, b0.rect.at(b0.goal))) || crossed(pairKey(i0, j0))) {
-            continue;
-          }
+      // Pairs whose remaining hulls meet, found by sweeping the hulls sorted by their left edge
+      // instead of testing all N² pairs; the earliest event is the least of a strict order
+      // (time, then the pair's add orders), so the order pairs are visited in does not matter.
+      hulls_.clear();
+      byX_.clear();
+      for (std::size_t k = 0; k < bodies_.size(); ++k) {
+        hulls_.push_back(unite(bodies_[k].rect, bodies_[k].rect.at(bodies_[k].goal)));
+        byX_.push_back(static_cast<std::uint32_t>(k));
+      }
+      std::sort(byX_.begin(), byX_.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return hulls_[a].x != hulls_[b].x ? hulls_[a].x < hulls_[b].x : a < b;
+      });
+      for (std::size_t p = 0; p < byX_.size(); ++p) {
+        const Rect& hp = hulls_[byX_[p]];
+        for (std::size_t q = p + 1; q < byX_.size() && hulls_[byX_[q]].x < hp.right(); ++q) {
+          const std::size_t i0 = std::min(byX_[p], byX_[q]), j0 = std::max(byX_[p], byX_[q]);
+          if (!overlaps(hulls_[i0], hulls_[j0]) || crossed(pairKey(i0, j0))) continue;
           const bool swap = order_[j0] < order_[i0];
           const std::size_t i = swap ? j0 : i0, j = swap ? i0 : j0;
           const Body& a = bodies_[i];

@@ -84,7 +84,12 @@ World::Hash::Hash(double cellSize) : p_(new detail::SpatialHash(cellSize)) {}
 World::Hash::Hash(const Hash& other) : p_(new detail::SpatialHash(*other.p_)) {}
 World::Hash::Hash(Hash&& other) noexcept : p_(std::exchange(other.p_, nullptr)) {}
 World::Hash& World::Hash::operator=(const Hash& other) {
-  if (this != &other) *p_ = *other.p_;
+  if (this == &other) return *this;
+  if (p_ == nullptr) {  // moved from: assignable again, as a world of vectors would be
+    p_ = new detail::SpatialHash(*other.p_);
+  } else {
+    *p_ = *other.p_;
+  }
   return *this;
 }
 World::Hash& World::Hash::operator=(Hash&& other) noexcept {

@@ -48,8 +48,9 @@ std::vector<std::uint32_t> slotsIn(const SpatialHash& h, Cell c) {
 void expectMatches(const SpatialHash& h, const std::map<std::uint32_t, Rect>& items) {
   std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::uint32_t>> expected;
   for (const auto& [slot, r] : items) {
-    Grid::forEachCell(h.grid().cellsHolding(r),
-                      [&](Cell c) { expected[{c.x, c.y}].push_back(slot); });
+    Grid::forEachCell(h.grid().cellsHolding(r), [&](Cell c) {
+      expected[{c.x, c.y}].push_back(slot);
+    });
   }
   std::size_t cells = 0;
   h.forEachOccupiedCell([&](Cell c, std::size_t n) {
@@ -210,6 +211,27 @@ TEST(WorldCells, MemoryReturnsToBaselineAfterABodyCrossesAMillionEmptyCells) {
   for (int i = 1; i <= 1000000; ++i) (void)w.move(body, {4 + 16.0 * i, 32});
   EXPECT_EQ(w.countCells(), 100u + 1u);
   EXPECT_LE(w.memoryBytes(), baseline + 1024);
+}
+
+TEST(WorldCells, ACopyIsDeepAndMovesExactlyAsTheOriginal) {
+  World a(16);
+  for (int i = 0; i < 20; ++i) a.add({i * 16.0, 64, 16, 16});
+  const ItemId m = a.add({0, 0, 8, 8});
+  World b = a;
+  const MoveResult ra = a.move(m, {100, 70});
+  const Vec2 pa = ra.position;
+  const MoveResult rb = b.move(m, {100, 70});
+  EXPECT_EQ(pa, rb.position);
+  EXPECT_EQ(a.stateHash(), b.stateHash());
+  // Changing one leaves the other alone, cells included.
+  b.remove(m);
+  EXPECT_TRUE(a.has(m));
+  EXPECT_EQ(a.queryRect({0, 0, 400, 200}, {}).size(), 20u + 1u);
+  World c(32);
+  c = std::move(b);
+  b = a;  // a moved-from world can be assigned again
+  EXPECT_EQ(b.stateHash(), a.stateHash());
+  EXPECT_EQ(c.countCells(), 20u);
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ TEST(Registry, HoldsTheScenesTheIssueAsksFor) {
   const std::vector<std::string_view> listed = builtinScenes().names();
   const std::set<std::string_view> names(listed.begin(), listed.end());
   for (const char* n : {"bullets-wall", "rest-wall", "rest-floor", "seam-walk", "corner-graze",
-                        "bounce-gap", "bullets-enemies", "platformer", "crowd"}) {
+                        "bounce-gap", "bullets-enemies", "platformer", "crowd", "bump-crowd"}) {
     EXPECT_TRUE(names.contains(n)) << n;
   }
   EXPECT_EQ(names.size(), builtinScenes().all().size()) << "names are unique";

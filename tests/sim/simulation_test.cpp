@@ -21,6 +21,7 @@ Params quick(const SceneDef& s) {
   Params p = s.defaults();
   if (s.name == "bullets-wall") p.set(param::count, 100);
   if (s.name == "crowd") p.set(param::count, 60);
+  if (s.name == "bump-crowd") p.set(param::count, 100);
   return p;
 }
 

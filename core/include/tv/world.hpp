@@ -131,7 +131,9 @@ class World {
   template <class F>
   void forEachOccupiedCell(F&& f) const {
     visitOccupiedCells(
-        [](void* ctx, Cell c, std::size_t n) { (*static_cast<std::remove_reference_t<F>*>(ctx))(c, n); },
+        [](void* ctx, Cell c, std::size_t n) {
+          (*static_cast<std::remove_reference_t<F>*>(ctx))(c, n);
+        },
         const_cast<void*>(static_cast<const void*>(&f)));
   }
   /// Calls f(ItemId, const Rect&) for every item, in slot order.

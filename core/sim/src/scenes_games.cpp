@@ -1,7 +1,9 @@
 // Game-like scenes.
 //   platformer  a small level and a scripted player: run, jump, land
 //   crowd       many small movers among tiles, ~30% solid; the world grows with their number
+//   bump-crowd  bump.lua's own benchmark scene: movers sliding among random platforms
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <string_view>
@@ -238,11 +240,144 @@ SceneDef crowd() {
   return def;
 }
 
+// [SECTION] bump-crowd ----------------------------------------------------------------------------
+//
+// bump.lua's benchmark scene, so that our figures compare with the numbers its users know: a
+// square world of tiles (2000 px a side up to 10^4 movers, 6320 px beyond: the same density) with
+// a solid one-tile border, plus random horizontal platforms 3-12 tiles long (clipped inside the
+// border) until 30% of the grid is solid, one item per tile. `count` movers at random free spots
+// (overlapping no tile and no other mover), random directions, speeds uniform in
+// [speed / 8, speed]. Each moves with `slide` and flips the velocity component of each
+// collision normal it reports (a component already leaving the obstacle is kept). `meet` 0:
+// movers ignore each other; 1: they slide against each other too.
+//   hits  collisions with solids
+//
+// Flipping keeps each component's magnitude, so a mover's |vx| and |vy| are constants: built as
+// floats, kept in `group` and `state` as their bits, and a collision sets the component to the
+// magnitude with the sign of its normal — exactly what flipping does, after the slide response
+// has zeroed the component that pointed into the obstacle.
+
+constexpr std::string_view kMeet = "meet";
+
+class BumpCrowdRules final : public SceneRules {
+ public:
+  void afterMove(TickContext& ctx, std::size_t i, Vec2,
+                 std::span<const Collision> cols) const override {
+    Body& b = ctx.bodies[i];
+    const double ax = std::bit_cast<float>(b.group);
+    const double ay = std::bit_cast<float>(static_cast<std::uint32_t>(b.state));
+    for (const Collision& c : cols) {
+      if (ctx.bodyOf(c.other) < 0) ++ctx.counters.hits;
+      if (c.normal.x != 0.0) b.velocity.x = c.normal.x > 0.0 ? ax : -ax;
+      if (c.normal.y != 0.0) b.velocity.y = c.normal.y > 0.0 ? ay : -ay;
+    }
+  }
+};
+
+double bumpCrowdSide(std::int64_t count) {
+  return count > 10000 ? 6320.0 : 2000.0;
+}
+
+SceneSetup buildBumpCrowd(const Params& p) {
+  const Common c = readCommon(p);
+  const double t = c.tile;
+  const auto side = static_cast<std::int64_t>(bumpCrowdSide(c.count) / t);
+  if (side < 4)
+    sceneFail("bump-crowd", "tile " + formatNumber(t) + " leaves fewer than 4 tiles a side");
+  if (c.size >= t) {
+    sceneFail("bump-crowd",
+              "size must be < tile (" + formatNumber(t) + "), but was " + formatNumber(c.size));
+  }
+  SceneSetup s;
+  s.cellSize = c.cell;
+  Rng rng(c.seed);
+  std::vector<std::uint8_t> solid(static_cast<std::size_t>(side * side), 0);
+  std::int64_t solidCount = 0;
+  const auto set = [&](std::int64_t x, std::int64_t y) {
+    std::uint8_t& cell = solid[static_cast<std::size_t>(y * side + x)];
+    if (cell == 0) ++solidCount;
+    cell = 1;
+  };
+  for (std::int64_t k = 0; k < side; ++k) {
+    set(k, 0);
+    set(k, side - 1);
+    set(0, k);
+    set(side - 1, k);
+  }
+  const auto target = static_cast<std::int64_t>(std::ceil(0.3 * static_cast<double>(side * side)));
+  const auto inner = static_cast<std::uint64_t>(side - 2);
+  while (solidCount < target) {
+    const auto length = 3 + static_cast<std::int64_t>(rng.below(10));
+    const auto y = 1 + static_cast<std::int64_t>(rng.below(inner));
+    const auto x0 = 1 + static_cast<std::int64_t>(rng.below(inner));
+    for (std::int64_t x = x0; x < std::min(x0 + length, side - 1); ++x) set(x, y);
+  }
+  // The free spots are found against a world of the same cell size holding what is placed.
+  World placed(c.cell);
+  for (std::int64_t y = 0; y < side; ++y) {
+    for (std::int64_t x = 0; x < side; ++x) {
+      if (solid[static_cast<std::size_t>(y * side + x)] == 0) continue;
+      const Rect r{c.offset + static_cast<double>(x) * t, c.offset + static_cast<double>(y) * t, t,
+                   t};
+      s.solids.push_back({r});
+      (void)placed.add(r);
+    }
+  }
+  const double lo = c.offset + t, hi = c.offset + static_cast<double>(side - 1) * t - c.size;
+  const std::int64_t attempts = 1000 + 100 * c.count;
+  for (std::int64_t tried = 0; static_cast<std::int64_t>(s.bodies.size()) < c.count; ++tried) {
+    if (tried == attempts) {
+      sceneFail("bump-crowd", "could not place " + std::to_string(c.count) +
+                                  " movers (try a smaller count or size)");
+    }
+    const Rect r{rng.uniform(lo, hi), rng.uniform(lo, hi), c.size, c.size};
+    if (placed.anyOverlap(r)) continue;
+    (void)placed.add(r);
+    const double angle = 2.0 * std::numbers::pi * rng.uniform();
+    const double speed = rng.uniform(c.speed / 8.0, c.speed);
+    const auto vx = static_cast<float>(std::cos(angle) * speed);
+    const auto vy = static_cast<float>(std::sin(angle) * speed);
+    const std::uint32_t mask = p.getInt(kMeet) != 0 ? kLayerSolid | kLayerCrowd : kLayerSolid;
+    Body b = makeBody(r, BodyRole::crowd, kLayerCrowd, mask, response::slide, Vec2{vx, vy},
+                      std::bit_cast<std::uint32_t>(std::fabs(vx)));
+    b.state = static_cast<std::int32_t>(std::bit_cast<std::uint32_t>(std::fabs(vy)));
+    s.bodies.push_back(b);
+  }
+  s.rules = std::make_shared<BumpCrowdRules>();
+  return s;
+}
+
+SceneDef bumpCrowd() {
+  CommonDefaults d;
+  d.speed = 240;
+  d.size = 8;
+  d.count = 1000;
+  d.cell = 32;
+  d.speedMeaning = "fastest mover; speeds are uniform in [speed / 8, speed]";
+  d.sizeMeaning = "side of a mover (less than a tile)";
+  d.countMeaning = "movers; 2000 px world up to 10^4, 6320 px beyond";
+  SceneDef def;
+  def.category = "Games";
+  def.name = "bump-crowd";
+  def.description = "bump.lua's benchmark: movers sliding among random platforms, 30% solid";
+  def.params = commonParams(d);
+  def.params.push_back(intParam(
+      std::string(kMeet), "1: movers slide against each other; 0: they pass through", 0, 0, 1));
+  def.camera = [](const Params& p) {
+    const Common c = readCommon(p);
+    const double side = std::min(bumpCrowdSide(c.count), 800.0);
+    return Rect{c.offset, c.offset, side, side};
+  };
+  def.build = buildBumpCrowd;
+  return def;
+}
+
 }  // namespace
 
 void registerGameScenes(SceneRegistry& r) {
   r.add(platformer());
   r.add(crowd());
+  r.add(bumpCrowd());
 }
 
 }  // namespace tv::sim::detail
