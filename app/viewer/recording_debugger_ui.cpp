@@ -278,6 +278,11 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
                                d);
           }
         }
+      } else if (const auto id = sessions[k]->selected(); id && sessions[k]->world().has(*id)) {
+        // Moved by update (a game that moves bodies itself): nothing was swept to trace.
+        const Rect r = sessions[k]->world().rect(*id);
+        ImGui::Text("%s at (%.3f, %.3f), no move traced", sessions[k]->describe(*id).c_str(), r.x,
+                    r.y);
       } else {
         ImGui::TextColored(colour(pal::kDim), "select a call or an item to trace");
       }
@@ -369,6 +374,13 @@ void RecordingDebugger::drawWhatIfReport() {
   ImGui::TextColored(colour(r->tunnelled ? pal::kBad : pal::kGood),
                      "tunnelled: %" PRIu64 "   ended overlapping a solid: %" PRIu64, r->tunnelled,
                      r->overlapping);
+  ImGui::TextColored(colour(r->recordedTunnelled ? pal::kBad : pal::kDim),
+                     "the recorded run: tunnelled %" PRIu64 ", ended overlapping %" PRIu64,
+                     r->recordedTunnelled, r->recordedOverlapping);
+  if (r->failedCalls > 0) {
+    ImGui::TextColored(colour(pal::kRender), "%" PRIu64 " calls refused by the re-run world",
+                       r->failedCalls);
+  }
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg |
                                 ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
   if (!ImGui::BeginTable("differences", 4, flags)) return;

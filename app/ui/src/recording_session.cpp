@@ -58,7 +58,7 @@ void RecordingSession::rebuild() {
       const CallInfo& c = here[k];
       const bool isCall = f == frame_ && call_ && k == *call_;
       const bool traced =
-          tracesAMove(c.kind) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
+          traces(c) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
       MoveTrace t;
       std::optional<Divergence> d = replay_.step(traced ? &t : nullptr);
       if (d && !divergence_) divergence_ = std::move(d);
@@ -72,6 +72,12 @@ void RecordingSession::rebuild() {
   constexpr std::size_t kKeep = 16;
   if (moves_.size() > kKeep)
     moves_.erase(moves_.begin(), moves_.end() - static_cast<std::ptrdiff_t>(kKeep));
+}
+
+bool RecordingSession::traces(const CallInfo& c) const {
+  if (tracesAMove(c.kind)) return true;
+  const ReplayOptions& o = replay_.options();
+  return c.kind == CallKind::update && o.mover && o.updatesAsMoves;
 }
 
 const MoveTrace* RecordingSession::callTrace() const {

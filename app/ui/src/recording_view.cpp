@@ -298,9 +298,13 @@ void recordingInspectorContents(const RecordingSession& s) {
                            c.position.x, c.position.y, m->final.x, m->final.y);
       }
       traceDetails(s, *m);
-    } else if (!tracesAMove(c.kind)) {
-      ImGui::TextColored(colour(pal::kDim), "%u results recorded (a query has no move to trace)",
+    } else if (c.kind == CallKind::queryRect || c.kind == CallKind::queryPoint ||
+               c.kind == CallKind::querySegment || c.kind == CallKind::anyOverlap) {
+      ImGui::TextColored(colour(pal::kDim), "%u results recorded (a query sweeps nothing)",
                          c.hits);
+    } else if (!s.traces(c)) {
+      ImGui::TextColored(colour(pal::kDim), "nothing is swept by %s, so there is no trace",
+                         std::string(callKindName(c.kind)).c_str());
     }
     return;
   }

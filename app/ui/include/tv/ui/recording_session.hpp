@@ -58,6 +58,9 @@ class RecordingSession {
   [[nodiscard]] std::optional<ItemId> findLabel(std::string_view label) const;
   /// The item under world point `p`: a moving item before a still one, the smallest first.
   [[nodiscard]] std::optional<ItemId> itemAt(Vec2 p) const;
+  /// True for the calls whose re-run leaves a MoveTrace: moves, checks, projects, a Mover's
+  /// moves, and in a what-if run with updatesAsMoves the updates it makes moves.
+  [[nodiscard]] bool traces(const CallInfo& c) const;
   /// True for items that move somewhere in the recording (drawn as bodies); the rest are solids.
   [[nodiscard]] bool moves(ItemId id) const;
 
