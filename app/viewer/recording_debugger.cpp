@@ -32,8 +32,18 @@ RecordingDebugger::RecordingDebugger(const std::string& path, const ui::Overlays
       pinned_(pinned) {
   state_.view.overlays = overlays;
   state_.view.paused = true;
+  traceBusiest();
   frameAll();
   validation_.start(path_, pinned_);
+}
+
+void RecordingDebugger::traceBusiest() {
+  // Something to look at from the first frame: the item that moves most (the player, usually).
+  const RecordedItem* busiest = nullptr;
+  for (const RecordedItem& r : session_->replay().items()) {
+    if (r.moves > 0 && (!busiest || r.moves > busiest->moves)) busiest = &r;
+  }
+  if (busiest) session_->select(busiest->id);
 }
 
 RecordingDebugger::~RecordingDebugger() = default;
@@ -44,6 +54,7 @@ void RecordingDebugger::reopen(const std::string& path) {
     path_ = path;
     session_ = std::move(next);
     whatIf_.reset();
+    traceBusiest();
     paused_ = true;
     message_.clear();
     frameAll();

@@ -24,8 +24,8 @@
 
 namespace tv::viewer {
 
-/// The File > Open recording... dialog: a path to type (Tab completes .tvrec files of the
-/// current folder, listed below it). Returns the path chosen, once.
+/// The File > Open recording... dialog: a path to type, and the .tvrec files of the folder it
+/// names (or the current one) to click. Returns the path chosen, once.
 class OpenRecordingDialog {
  public:
   void open() { open_ = true; }
@@ -76,6 +76,7 @@ class RecordingDebugger {
   void handleKeys(std::span<const KeyPress> keys);
   void syncWhatIf();
   void frameAll();
+  void traceBusiest();
   [[nodiscard]] Rect followRect() const;
   void report(const std::string& what);
 

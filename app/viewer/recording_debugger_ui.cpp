@@ -34,6 +34,18 @@ ImVec4 colour(ImU32 c) {
   return ImGui::ColorConvertU32ToFloat4(c);
 }
 
+// "substep-discrete (8 px pieces)": the name, and the piece length where it has one.
+std::string moverLabel(const MoverSpec& m) {
+  if (m.kind != MoverKind::substep) return m.name();
+  char text[96];
+  if (m.maxStep == 0.0) {
+    std::snprintf(text, sizeof text, "%s (pieces of half the smallest item)", m.name().c_str());
+  } else {
+    std::snprintf(text, sizeof text, "%s (%g px pieces)", m.name().c_str(), m.maxStep);
+  }
+  return text;
+}
+
 }  // namespace
 
 // [SECTION] the frame ------------------------------------------------------------------------
@@ -236,7 +248,7 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
                    ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
     ImGui::Text("%s   frame %" PRIu64 "   recorded run  vs  %s%s", session_->name().c_str(),
-                session_->frame(), w.mover.name().c_str(),
+                session_->frame(), moverLabel(w.mover).c_str(),
                 w.updatesAsMoves ? " (updates treated as moves)" : "");
     ImGui::PushStyleColor(ImGuiCol_Text, pal::kRender);
     ImGui::TextWrapped("%s", kOpenLoop);
@@ -250,7 +262,7 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
   ui::RecordingSession* sessions[2] = {session_.get(), w.session.get()};
   ui::DebuggerState* views[2] = {&state_.view, &w.view};
   const std::string names[2] = {"recorded###RecordedPanel",
-                                "what-if: " + w.mover.name() + "###WhatIfPanel"};
+                                "what-if: " + moverLabel(w.mover) + "###WhatIfPanel"};
   std::optional<ItemId> picked;
   for (int k = 0; k < 2; ++k) {
     ImGui::SetNextWindowPos({origin.x + half * static_cast<float>(k), origin.y + titleH},
@@ -346,8 +358,8 @@ void RecordingDebugger::drawWhatIfReport() {
   }
   const auto r = w.job.report();
   if (!r) return;
-  ImGui::Text("%" PRIu64 " moves re-run with %s; %zu ended elsewhere", r->moves,
-              w.mover.name().c_str(), r->differences.size());
+  ImGui::TextWrapped("%" PRIu64 " moves re-run with %s; %zu ended elsewhere", r->moves,
+                     moverLabel(w.mover).c_str(), r->differences.size());
   const auto goButton = [&](const char* id, std::uint64_t f, std::optional<std::uint32_t> call) {
     ImGui::SameLine();
     if (ImGui::SmallButton(id)) {
@@ -374,9 +386,10 @@ void RecordingDebugger::drawWhatIfReport() {
   ImGui::TextColored(colour(r->tunnelled ? pal::kBad : pal::kGood),
                      "tunnelled: %" PRIu64 "   ended overlapping a solid: %" PRIu64, r->tunnelled,
                      r->overlapping);
-  ImGui::TextColored(colour(r->recordedTunnelled ? pal::kBad : pal::kDim),
-                     "the recorded run: tunnelled %" PRIu64 ", ended overlapping %" PRIu64,
+  ImGui::PushStyleColor(ImGuiCol_Text, r->recordedTunnelled ? pal::kBad : pal::kDim);
+  ImGui::TextWrapped("the recorded run: tunnelled %" PRIu64 ", ended overlapping %" PRIu64,
                      r->recordedTunnelled, r->recordedOverlapping);
+  ImGui::PopStyleColor();
   if (r->failedCalls > 0) {
     ImGui::TextColored(colour(pal::kRender), "%" PRIu64 " calls refused by the re-run world",
                        r->failedCalls);
@@ -407,7 +420,8 @@ void RecordingDebugger::drawWhatIfReport() {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(session_->describe(d.item).c_str());
       ImGui::TableNextColumn();
-      ImGui::Text("%.3f", d.distance);
+      // Enough digits that a rounding-sized difference does not read as 0.000.
+      ImGui::Text("%.4g", d.distance);
       ImGui::TableNextColumn();
       if (d.tunnelled) {
         ImGui::TextColored(colour(pal::kBad), "tunnelled");
