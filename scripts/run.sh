@@ -3,7 +3,8 @@
 # - with a display: records the example platformer and opens its recording in the debugger
 #   (extra arguments go to tv-debugger instead);
 # - without one (or with --headless): renders the before/after comparison images into
-#   out/comparisons/ and prints the tunnelling table, measured.
+#   out/comparisons/, records the sample game and validates its recording, and prints the
+#   tunnelling table, measured.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh all
@@ -18,9 +19,10 @@ fi
 if [ $headless = 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; }; then
   if cmake --build --preset release --target tv-debugger tv-example-platformer >&2; then
     if [ $# = 0 ]; then
-      mkdir -p out
-      "$build/app/examples/tv-example-platformer" --frames 600 --record out/sample.tvrec >&2
-      exec "$build/app/viewer/tv-debugger" out/sample.tvrec
+      mkdir -p out/recordings
+      "$build/app/examples/tv-example-platformer" --frames 600 \
+        --record out/recordings/platformer.tvrec >&2
+      exec "$build/app/viewer/tv-debugger" out/recordings/platformer.tvrec
     fi
     exec "$build/app/viewer/tv-debugger" "$@"
   fi
@@ -47,6 +49,16 @@ LIST
 echo "Comparison images (before/after, side by side), in $out/:"
 cat "$out/index.txt"
 echo
+
+# A game that records itself, its recording summarised and validated (tv-replay).
+if cmake --build --preset release --target tv-example-platformer tv-replay >&2; then
+  mkdir -p out/recordings
+  echo "The sample platformer, recorded (out/recordings/platformer.tvrec):"
+  "$build/app/examples/tv-example-platformer" --frames 600 --record out/recordings/platformer.tvrec
+  "$build/app/replay/tv-replay" out/recordings/platformer.tvrec
+  "$build/app/replay/tv-replay" out/recordings/platformer.tvrec --validate
+  echo
+fi
 
 if [ $bench = 1 ]; then
   exec "$build/app/bench/tv-bench" tunnel --out out/bench

@@ -169,6 +169,10 @@ void Replay::Impl::index() {
       while (!src.done()) {
         rec::decodeCall(src, m, c, options.maxCells);
         ++info.calls;
+        // A pixel mover keeps sub-pixel remainders that no keyframe holds: seek from frame 0.
+        if (c.kind == CallKind::moverMove && m.movers[c.mover].kind == MoverKind::pixel) {
+          statefulMovers = true;
+        }
         tally(c, f, answerCounts);
       }
     } catch (const Error& e) {
@@ -300,26 +304,6 @@ Replay Replay::fromBytes(std::vector<std::uint8_t> bytes, ReplayOptions options)
   impl->options = options;
   if (options.mover) impl->whatIfMover = std::make_unique<Mover>(*options.mover);
   impl->index();
-  // Which movers keep state a keyframe cannot hold: scan the mover definitions once.
-  impl->statefulMovers = false;
-  {
-    rec::Model m;
-    m.cellSize = impl->cellSize;
-    WorldState ws;
-    rec::Call c;
-    for (std::uint64_t f = 0; f < impl->frames.size() && !impl->statefulMovers; ++f) {
-      const FrameInfo& fi = impl->frames[f];
-      rec::In in(impl->bytes.data() + fi.offset, fi.size, fi.offset, f);
-      impl->beginFrame(in, m, ws, f);
-      while (!in.done()) {
-        rec::decodeCall(in, m, c, impl->options.maxCells);
-        if (c.kind == CallKind::moverMove && m.movers[c.mover].kind == MoverKind::pixel) {
-          impl->statefulMovers = true;
-          break;
-        }
-      }
-    }
-  }
   Replay r(std::move(impl));
   r.seek(0, 0);
   return r;
