@@ -71,8 +71,8 @@ class RecordingSession {
   [[nodiscard]] std::span<const TracedMove> history() const { return moves_; }
   /// The selected call's trace (a move, check or project), if one is selected.
   [[nodiscard]] const MoveTrace* callTrace() const;
-  /// The first divergence met while replaying for the view (the call's recorded result differs
-  /// from what core returned), if any.
+  /// The first divergence in the frame on screen (a call's recorded result differs from what
+  /// core returned), if any.
   [[nodiscard]] const std::optional<Divergence>& divergence() const { return divergence_; }
   /// What the world view draws now (valid until the next call that changes the session).
   [[nodiscard]] WorldPicture picture();
@@ -88,6 +88,8 @@ class RecordingSession {
 
  private:
   void rebuild();
+  void stepFrame(std::uint64_t f, const std::vector<CallInfo>& calls, std::size_t end);
+  void trimHistory();
 
   Replay replay_;
   std::string name_;
@@ -97,6 +99,7 @@ class RecordingSession {
   std::optional<ItemId> selected_;
   std::vector<TracedMove> moves_;
   bool callTraced_ = false;
+  bool primed_ = false;  // the replay stands at the end of frame_, nothing selected in it
   std::optional<Divergence> divergence_;
   std::unordered_map<ItemId, std::size_t> recorded_;  // item -> index in replay.items()
   // The picture's storage.
