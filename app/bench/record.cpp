@@ -80,14 +80,17 @@ class Crowd {
   std::vector<std::int32_t> bodyBySlot_;
 };
 
-double ms(const Stopwatch& sw) { return sw.seconds() * 1e3; }
+double ms(const Stopwatch& sw) {
+  return sw.seconds() * 1e3;
+}
 
 // [SECTION] the study -----------------------------------------------------------------------------
 
 }  // namespace
 
 int runRecord(const Options& o) {
-  const auto count = static_cast<std::int64_t>(o.has("count") ? parseCount("count", o.extra.at("count")) : 10000);
+  const auto count =
+      static_cast<std::int64_t>(o.has("count") ? parseCount("count", o.extra.at("count")) : 10000);
   if (count < 1 || count > 100000) throw UsageError{"--count: expected 1 to 100000"};
   std::uint64_t ticks = o.pick<std::uint64_t>(10, 60, 300);
   if (o.has("ticks")) ticks = parseCount("ticks", o.extra.at("ticks"));
@@ -159,8 +162,10 @@ int runRecord(const Options& o) {
   file.world().detach();
   Table overhead({"crowd of " + std::to_string(count) + ", continuous", "ms/tick:", "overhead:"});
   overhead.add({"detached", fixed(bestPlain, 3), "-"});
-  overhead.add({"recording to memory", fixed(bestMemory, 3), percent(bestMemory - bestPlain, bestPlain)});
-  overhead.add({"recording to a file (flushed per frame)", fixed(bestFile, 3), percent(bestFile - bestPlain, bestPlain)});
+  overhead.add(
+      {"recording to memory", fixed(bestMemory, 3), percent(bestMemory - bestPlain, bestPlain)});
+  overhead.add({"recording to a file (flushed per frame)", fixed(bestFile, 3),
+                percent(bestFile - bestPlain, bestPlain)});
   os << "### Recording on the crowd\n\n";
   overhead.printMarkdown(os);
   overhead.writeCsv(o.out, "record_overhead.csv");
@@ -173,8 +178,9 @@ int runRecord(const Options& o) {
   Table sizes({"recording", "frames:", "calls:", "moves:", "bytes:", "bytes/move:", "bytes/call:"});
   const auto sizeRow = [&](const std::string& name, const Recorder& r) {
     const double moves = static_cast<double>(std::max<std::uint64_t>(1, r.moves()));
-    sizes.add({name, std::to_string(r.frames()), std::to_string(r.calls()), std::to_string(r.moves()),
-               std::to_string(r.size()), r.moves() ? fixed(static_cast<double>(r.size()) / moves, 1) : "-",
+    sizes.add({name, std::to_string(r.frames()), std::to_string(r.calls()),
+               std::to_string(r.moves()), std::to_string(r.size()),
+               r.moves() ? fixed(static_cast<double>(r.size()) / moves, 1) : "-",
                fixed(static_cast<double>(r.size()) / static_cast<double>(r.calls()), 1)});
   };
   sizeRow("crowd of " + std::to_string(count) + " (Mover::move per body per tick)", memRec);
@@ -228,9 +234,11 @@ int runRecord(const Options& o) {
     worst = std::max(worst, t);
     total += t;
   }
-  Table seek({"recording", "frames:", "bytes:", "keyframe every:", "open ms:", "seek ms (mean):", "seek ms (worst):"});
-  seek.add({"sample platformer", std::to_string(longReplay.frames()), std::to_string(longRec.size()), "64",
-            fixed(openMs, 1), fixed(total / seeks, 2), fixed(worst, 2)});
+  Table seek({"recording", "frames:", "bytes:", "keyframe every:", "open ms:", "seek ms (mean):",
+              "seek ms (worst):"});
+  seek.add({"sample platformer", std::to_string(longReplay.frames()),
+            std::to_string(longRec.size()), "64", fixed(openMs, 1), fixed(total / seeks, 2),
+            fixed(worst, 2)});
   os << "\n### Seeking (" << seeks << " random frames, each from its nearest keyframe)\n\n";
   seek.printMarkdown(os);
   seek.writeCsv(o.out, "record_seek.csv");

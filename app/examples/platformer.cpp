@@ -101,7 +101,8 @@ int main(int argc, char** argv) {
     for (int t = 0; t < ticks; ++t) game.tick(game.ticks++, step.step(), rec);
   }
   std::printf("ticks: %llu · bullets fired: %d, stopped by the wall: %d, through the wall: %d\n",
-              static_cast<unsigned long long>(game.ticks), game.fired(), game.stopped(), game.through());
+              static_cast<unsigned long long>(game.ticks), game.fired(), game.stopped(),
+              game.through());
   if (recorder) {
     recorder->close();
     if (!recorder->ok()) {

@@ -16,10 +16,10 @@
 namespace tv::example {
 
 constexpr double kTile = 16.0;
-constexpr double kGravity = 900.0;      // px/s²
-constexpr double kRun = 120.0;          // px/s
-constexpr double kJump = -330.0;        // px/s
-constexpr double kBulletSpeed = 1920.0; // px/s: 32 px a tick, far more than wall + bullet
+constexpr double kGravity = 900.0;       // px/s²
+constexpr double kRun = 120.0;           // px/s
+constexpr double kJump = -330.0;         // px/s
+constexpr double kBulletSpeed = 1920.0;  // px/s: 32 px a tick, far more than wall + bullet
 constexpr int kColumns = 40;
 constexpr int kFloorRow = 12;
 constexpr double kWallX = 30 * kTile + 7;  // a 2 px wall standing on the floor
@@ -38,7 +38,8 @@ class Game {
 
   void build(tv::Recorder* rec) {
     for (int x = 0; x < kColumns; ++x) addTile(rec, x, kFloorRow);
-    for (int x = 10; x < 16; ++x) addTile(rec, x, kFloorRow - 4);  // a ledge to jump on and fall off
+    for (int x = 10; x < 16; ++x)
+      addTile(rec, x, kFloorRow - 4);  // a ledge to jump on and fall off
     addTile(rec, -1, kFloorRow - 1);
     addTile(rec, kColumns, kFloorRow - 1);
     wall_ = world_.add({kWallX, (kFloorRow - 6) * kTile, 2, 6 * kTile});
@@ -84,7 +85,8 @@ class Game {
       const auto filter = [this](tv::ItemId, tv::ItemId other) {
         return isBullet(other) ? tv::response::ignore : tv::response::slide;
       };
-      for (const tv::Collision& c : mover_.move(world_, player_, goal, filter).collisions) land(c.normal);
+      for (const tv::Collision& c : mover_.move(world_, player_, goal, filter).collisions)
+        land(c.normal);
       return;
     }
     world_.update(player_, goal);
@@ -172,7 +174,6 @@ class Game {
   std::vector<Bullet> bullets_;
   int fired_ = 0, stopped_ = 0, through_ = 0;
 };
-
 
 struct Played {
   std::uint64_t ticks = 0;

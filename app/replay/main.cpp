@@ -34,15 +34,22 @@ struct Options {
 };
 
 constexpr const char* kUsage =
-    "usage: tv-replay FILE [--validate | --stats | --mover NAME [--substep L] [--updates-as-moves] [--far D]] [--tolerant]\n"
-    "  (no flag)           summary: frames, calls, moves, collisions, items, size, bytes per move, replay rate\n"
-    "  --validate          replay every call and compare it with the recording; exit 1 on a divergence\n"
-    "  --stats             per moving item: moves, hits, longest move, moves that ended inside a solid\n"
+    "usage: tv-replay FILE [--validate | --stats | --mover NAME [--substep L] [--updates-as-moves] "
+    "[--far D]] [--tolerant]\n"
+    "  (no flag)           summary: frames, calls, moves, collisions, items, size, bytes per move, "
+    "replay rate\n"
+    "  --validate          replay every call and compare it with the recording; exit 1 on a "
+    "divergence\n"
+    "  --stats             per moving item: moves, hits, longest move, moves that ended inside a "
+    "solid\n"
     "  --mover NAME        what-if: make every recorded move with this mover instead\n"
-    "                      (discrete, sweep, substep-discrete, substep-sweep, continuous, pixel, adaptive)\n"
+    "                      (discrete, sweep, substep-discrete, substep-sweep, continuous, pixel, "
+    "adaptive)\n"
     "  --substep L         what-if: substep piece length in world units (substep-* movers)\n"
-    "  --updates-as-moves  what-if: also make each position-only update a move (games that move bodies themselves)\n"
-    "  --far D             what-if: distance from the recording beyond which its goals stop making sense (default 64)\n"
+    "  --updates-as-moves  what-if: also make each position-only update a move (games that move "
+    "bodies themselves)\n"
+    "  --far D             what-if: distance from the recording beyond which its goals stop making "
+    "sense (default 64)\n"
     "  --tolerant          open what can be opened of a damaged file (a bad chunk ends it)\n";
 
 Options parse(int argc, char** argv) {
@@ -77,7 +84,8 @@ Options parse(int argc, char** argv) {
     } else if (o.file.empty()) {
       o.file = a;
     } else {
-      throw UsageError{"one recording at a time (got '" + o.file + "' and '" + std::string(a) + "')"};
+      throw UsageError{"one recording at a time (got '" + o.file + "' and '" + std::string(a) +
+                       "')"};
     }
   }
   if (o.file.empty()) throw UsageError{"no recording given"};
@@ -111,11 +119,13 @@ int summary(tv::Replay& r) {
   std::printf("collisions  %llu\n", static_cast<unsigned long long>(s.collisions));
   std::printf("items       %zu\n", r.items().size());
   std::printf("file size   %llu bytes\n", static_cast<unsigned long long>(s.bytes));
-  if (s.moves) std::printf("bytes/move  %.1f\n", static_cast<double>(s.bytes) / static_cast<double>(s.moves));
+  if (s.moves)
+    std::printf("bytes/move  %.1f\n", static_cast<double>(s.bytes) / static_cast<double>(s.moves));
   std::printf("replay      %.3f s: %.0f moves/s, %.0f calls/s, %.0f frames/s\n", t,
               static_cast<double>(s.moves) / t, static_cast<double>(s.calls) / t,
               static_cast<double>(s.frames) / t);
-  std::printf("validation  %s\n", d ? "DIVERGED (tv-replay --validate for the report)" : "ok, bit for bit");
+  std::printf("validation  %s\n",
+              d ? "DIVERGED (tv-replay --validate for the report)" : "ok, bit for bit");
   return 0;
 }
 
@@ -157,27 +167,40 @@ int whatIf(tv::Replay& r, const Options& o) {
   std::printf("What-if: the recorded moves%s made by %s%s.\n",
               o.updatesAsMoves ? " (and position updates)" : "", name.c_str(),
               o.substep ? (" (pieces of " + tv::formatNumber(*o.substep) + ")").c_str() : "");
-  std::printf("Open loop: the game's reactions to a different outcome are not in the file; each "
-              "recorded goal is replayed as it was.\n\n");
+  std::printf(
+      "Open loop: the game's reactions to a different outcome are not in the file; each "
+      "recorded goal is replayed as it was.\n\n");
   std::printf("| | recorded run | %s |\n|---|---:|---:|\n", name.c_str());
   std::printf("| moves that tunnelled | %llu | %llu |\n",
-              static_cast<unsigned long long>(w.recordedTunnelled), static_cast<unsigned long long>(w.tunnelled));
+              static_cast<unsigned long long>(w.recordedTunnelled),
+              static_cast<unsigned long long>(w.tunnelled));
   std::printf("| moves that ended inside a solid | %llu | %llu |\n",
-              static_cast<unsigned long long>(w.recordedOverlapping), static_cast<unsigned long long>(w.overlapping));
-  std::printf("\nmoves re-run: %llu; ended elsewhere: %zu", static_cast<unsigned long long>(w.moves),
-              static_cast<std::size_t>(std::count_if(w.differences.begin(), w.differences.end(),
-                                                     [](const tv::MoveDifference& m) { return m.distance > 0; })));
-  if (w.failedCalls) std::printf("; refused by the world: %llu", static_cast<unsigned long long>(w.failedCalls));
+              static_cast<unsigned long long>(w.recordedOverlapping),
+              static_cast<unsigned long long>(w.overlapping));
+  std::printf("\nmoves re-run: %llu; ended elsewhere: %zu",
+              static_cast<unsigned long long>(w.moves),
+              static_cast<std::size_t>(
+                  std::count_if(w.differences.begin(), w.differences.end(),
+                                [](const tv::MoveDifference& m) { return m.distance > 0; })));
+  if (w.failedCalls)
+    std::printf("; refused by the world: %llu", static_cast<unsigned long long>(w.failedCalls));
   std::printf("\n");
-  if (w.firstDifferentFrame) std::printf("first frame that differs: %llu\n", static_cast<unsigned long long>(*w.firstDifferentFrame));
+  if (w.firstDifferentFrame)
+    std::printf("first frame that differs: %llu\n",
+                static_cast<unsigned long long>(*w.firstDifferentFrame));
   if (w.firstImplausibleFrame) {
-    std::printf("first frame where a body is more than %s away from the recording (its goals stop "
-                "making sense from there): %llu\n",
-                tv::formatNumber(o.far).c_str(), static_cast<unsigned long long>(*w.firstImplausibleFrame));
+    std::printf(
+        "first frame where a body is more than %s away from the recording (its goals stop "
+        "making sense from there): %llu\n",
+        tv::formatNumber(o.far).c_str(), static_cast<unsigned long long>(*w.firstImplausibleFrame));
   }
   std::size_t shown = 0;
   for (const tv::MoveDifference& m : w.differences) {
-    if (shown == 0) std::printf("\n| frame | call | item | recorded | %s | distance | |\n|---:|---:|---|---|---|---:|---|\n", name.c_str());
+    if (shown == 0)
+      std::printf(
+          "\n| frame | call | item | recorded | %s | distance | "
+          "|\n|---:|---:|---|---|---|---:|---|\n",
+          name.c_str());
     if (++shown > 12) {
       std::printf("| … %zu more | | | | | | |\n", w.differences.size() - 12);
       break;
@@ -211,7 +234,8 @@ int main(int argc, char** argv) {
       tv::MoverSpec spec = tv::parseMover(*o.mover);
       if (o.substep) {
         if (spec.kind != tv::MoverKind::substep) {
-          throw tv::Error("tv-replay: --substep applies to the substep-* movers, not '" + *o.mover + "'");
+          throw tv::Error("tv-replay: --substep applies to the substep-* movers, not '" + *o.mover +
+                          "'");
         }
         spec.maxStep = *o.substep;
       }

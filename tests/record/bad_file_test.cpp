@@ -112,12 +112,12 @@ std::string errorOf(const Bytes& file, tv::ReplayOptions o = {}) {
   return {};
 }
 
-#define EXPECT_ERROR(file, ...)                                                   \
-  do {                                                                            \
-    const std::string e = errorOf(file);                                          \
-    for (const char* part : {__VA_ARGS__}) {                                      \
+#define EXPECT_ERROR(file, ...)                                                       \
+  do {                                                                                \
+    const std::string e = errorOf(file);                                              \
+    for (const char* part : {__VA_ARGS__}) {                                          \
       EXPECT_NE(e.find(part), std::string::npos) << "'" << part << "' not in: " << e; \
-    }                                                                             \
+    }                                                                                 \
   } while (0)
 
 Bytes sample() {
@@ -161,7 +161,8 @@ TEST(BadFile, ABadChunkChecksumNamesTheChunkAndFrame) {
   const std::vector<std::size_t> chunks = tvtest::chunks(f);
   ASSERT_GT(chunks.size(), 3u);
   f[chunks[2] + 12] ^= 0x40;
-  EXPECT_ERROR(f, ("byte " + std::to_string(chunks[2])).c_str(), "frame 2", "checksum mismatch");
+  const std::string at = "byte " + std::to_string(chunks[2]);
+  EXPECT_ERROR(f, at.c_str(), "frame 2", "checksum mismatch");
   // Tolerant (the debugger): opens what is whole, says why it stopped.
   tv::ReplayOptions o;
   o.tolerant = true;
@@ -209,8 +210,8 @@ TEST(BadFile, AnImpossibleCountIsRefusedBeforeAnythingIsAllocated) {
   varint(p, 1000000000000ull);
   EXPECT_ERROR(fileWith(p), "frame 0", "keyframe slot count 1000000000000 is more than");
   // A found list of 2^40 items.
-  Bytes q = frame1({7, 0});     // queryPoint at (P0 0, P0 0) ...
-  varint(q, 1ull << 40);        // ... found count
+  Bytes q = frame1({7, 0});  // queryPoint at (P0 0, P0 0) ...
+  varint(q, 1ull << 40);     // ... found count
   EXPECT_ERROR(fileWith(keyframe({}), q), "frame 1", "found count 1099511627776");
   // A chunk length of 2^31.
   Bytes huge = header();
@@ -230,7 +231,8 @@ TEST(BadFile, NaNAndInfinityAreRefusedNamingTheField) {
 
 TEST(BadFile, UnknownCallKindsAndFlagsAreRefused) {
   const std::string at = "byte " + std::to_string(32 + 8 + keyframe({}).size() + 8 + 2);
-  EXPECT_ERROR(fileWith(keyframe({}), frame1({0x0F})), "frame 1", at.c_str(), "unknown call kind 15");
+  EXPECT_ERROR(fileWith(keyframe({}), frame1({0x0F})), "frame 1", at.c_str(),
+               "unknown call kind 15");
   EXPECT_ERROR(fileWith(keyframe({}), frame1({0x87})), "queryPoint with undefined flags");
   Bytes frameFlags;
   varint(frameFlags, 1);
@@ -252,16 +254,19 @@ TEST(BadFile, ImpossibleRecordedResultsAreRefused) {
   const Bytes world = keyframe({{0, 0, 16, 16}, {32, 0, 16, 16}});
   // A move of item 0 (same as previous: index 0) with one collision against itself.
   //   kind move|same, goal group all P1 (stay), result group P0 P0, 1 collision, other delta 0
-  EXPECT_ERROR(fileWith(world, frame1({3 | 0x10, 0x05, 0x00, 1, 0, 0, 0, 0, 0, 0, 0})), "collision of an item with itself");
+  EXPECT_ERROR(fileWith(world, frame1({3 | 0x10, 0x05, 0x00, 1, 0, 0, 0, 0, 0, 0, 0})),
+               "collision of an item with itself");
   // ... against item 1 with ti = 5, not overlapping.
   Bytes p = frame1({3 | 0x10, 0x05, 0x00, 1, 2, 2 << 2});
   p.insert(p.end(), {0x00, 0xF0 /* move P0 P0, ti raw */});
   f64(p, 5.0);
   EXPECT_ERROR(fileWith(world, p), "collision ti 5 is outside [0, 1]");
   // A batch that moves one item twice.
-  EXPECT_ERROR(fileWith(world, frame1({12, 2, 0, 0x05, 0, 0x05, 0, 0, 0, 0})), "batch moves item 0 twice");
+  EXPECT_ERROR(fileWith(world, frame1({12, 2, 0, 0x05, 0, 0x05, 0, 0, 0, 0})),
+               "batch moves item 0 twice");
   // A filter answer naming an unregistered response.
-  EXPECT_ERROR(fileWith(world, frame1({9 | 0x20 | 0x80, 0, 0x00, 2, 5, 9, 2})), "answer response 9 is not registered");
+  EXPECT_ERROR(fileWith(world, frame1({9 | 0x20 | 0x80, 0, 0x00, 2, 5, 9, 2})),
+               "answer response 9 is not registered");
 }
 
 TEST(BadFile, HostileHugeRectsAreRefusedByTheCellBudgetNotAllocated) {
@@ -289,7 +294,8 @@ TEST(BadFile, AMoveThatWouldWalkBillionsOfCellsIsRefusedNotReplayedForHours) {
   // A tampered goal 10^15 px away: a replay would walk 6·10^13 cells.
   Bytes p = frame1({3 | 0x10 | 0x40, 0x07});  // move item 0, free; goal x raw, y unchanged
   f64(p, 1e15);
-  EXPECT_ERROR(fileWith(keyframe({{0, 0, 16, 16}}), p), "frame 1", "move would visit about", "cells");
+  EXPECT_ERROR(fileWith(keyframe({{0, 0, 16, 16}}), p), "frame 1", "move would visit about",
+               "cells");
 }
 
 TEST(BadFile, AMissingFileIsNamed) {

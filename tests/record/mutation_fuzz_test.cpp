@@ -70,7 +70,8 @@ Bytes mutate(const Bytes& seed, tv::sim::Rng& rng) {
         break;
       }
       case 3:
-        b.insert(b.begin() + static_cast<std::ptrdiff_t>(at), static_cast<std::uint8_t>(rng.below(256)));
+        b.insert(b.begin() + static_cast<std::ptrdiff_t>(at),
+                 static_cast<std::uint8_t>(rng.below(256)));
         break;
       case 4:
         b.erase(b.begin() + static_cast<std::ptrdiff_t>(at));
@@ -108,13 +109,21 @@ void fuzz(std::uint64_t seed) {
     // Anything else (bad_alloc, length_error, a crash) fails the test.
   }
   EXPECT_EQ(refused + replayed, n);
-  EXPECT_GT(refused, n / 10);   // the mutations do reach the checks...
-  EXPECT_GT(replayed, n / 100); // ...and some files still replay (harmless edits, cut tails)
+  EXPECT_GT(refused, n / 10);    // the mutations do reach the checks...
+  EXPECT_GT(replayed, n / 100);  // ...and some files still replay (harmless edits, cut tails)
 }
 
-TEST(MutationFuzz, Shard1NoMutatedFileCrashesOrThrowsAnythingButError) { fuzz(1); }
-TEST(MutationFuzz, Shard2NoMutatedFileCrashesOrThrowsAnythingButError) { fuzz(2); }
-TEST(MutationFuzz, Shard3NoMutatedFileCrashesOrThrowsAnythingButError) { fuzz(3); }
-TEST(MutationFuzz, Shard4NoMutatedFileCrashesOrThrowsAnythingButError) { fuzz(4); }
+TEST(MutationFuzz, Shard1NoMutatedFileCrashesOrThrowsAnythingButError) {
+  fuzz(1);
+}
+TEST(MutationFuzz, Shard2NoMutatedFileCrashesOrThrowsAnythingButError) {
+  fuzz(2);
+}
+TEST(MutationFuzz, Shard3NoMutatedFileCrashesOrThrowsAnythingButError) {
+  fuzz(3);
+}
+TEST(MutationFuzz, Shard4NoMutatedFileCrashesOrThrowsAnythingButError) {
+  fuzz(4);
+}
 
 }  // namespace

@@ -20,7 +20,9 @@
 
 namespace tvtest {
 
-inline tv::Leg stickyResponse(const tv::Collision& c, tv::Vec2) { return {c.touch, c.touch, false}; }
+inline tv::Leg stickyResponse(const tv::Collision& c, tv::Vec2) {
+  return {c.touch, c.touch, false};
+}
 inline tv::Leg springyResponse(const tv::Collision& c, tv::Vec2 goal) {
   return {c.touch, {goal.x, c.touch.y - 3.0}, false};
 }
@@ -67,7 +69,9 @@ struct Script {
     world.attach(rec);
     tv::FixedStep step(1.0 / 60.0);
     rec.attach(step);
-    for (int x = 0; x < 20; ++x) rec.label(tv::ItemId{static_cast<std::uint32_t>(x), 0}, "tile " + std::to_string(x) + ",10", "tile");
+    for (int x = 0; x < 20; ++x)
+      rec.label(tv::ItemId{static_cast<std::uint32_t>(x), 0}, "tile " + std::to_string(x) + ",10",
+                "tile");
     player = world.add({20, 130, 10, 13.7});  // reuses a free slot
     rec.label(player, "player", "player");
     ghost = world.add({60, 130, 12, 12});
@@ -80,7 +84,8 @@ struct Script {
       velocity.push_back({(97.3 + 13 * k) / 60.0, (61.7 - 9 * k) / 60.0});
       rec.label(bodies.back(), "body " + std::to_string(k), "body");
     }
-    const char* kinds[] = {"discrete", "sweep", "substep-discrete", "continuous", "pixel", "adaptive"};
+    const char* kinds[] = {"discrete",   "sweep", "substep-discrete",
+                           "continuous", "pixel", "adaptive"};
     for (const char* k : kinds) movers.emplace_back(tv::parseMover(k));
     bullet[0] = world.add({30, 120, 4, 4});
     bullet[1] = world.add({290, 120, 4, 4});
@@ -106,7 +111,8 @@ struct Script {
         tv::MoveOptions bounds;
         bounds.broad = tv::BroadPhase::bounds;
         bounds.maxResponses = 8;
-        const tv::MoveResult r = world.move(player, goal, filter, f % 2 ? bounds : tv::MoveOptions{});
+        const tv::MoveResult r =
+            world.move(player, goal, filter, f % 2 ? bounds : tv::MoveOptions{});
         movePositions.push_back(r.position);
         for (const tv::Collision& c : r.collisions) {
           if (c.normal.y != 0) pv.y = 0;
@@ -129,13 +135,15 @@ struct Script {
           });
         }
         // Two bullets meeting: moving against moving.
-        const tv::BatchMove moves[2] = {{bullet[0], world.rect(bullet[0]).position() + Vec2{9, 0}},
-                                        {bullet[1], world.rect(bullet[1]).position() + Vec2{-9, 0}}};
+        const tv::BatchMove moves[2] = {
+            {bullet[0], world.rect(bullet[0]).position() + Vec2{9, 0}},
+            {bullet[1], world.rect(bullet[1]).position() + Vec2{-9, 0}}};
         batch.step(world, moves, [&](tv::ItemId, tv::ItemId o) {
           return o == ghost ? tv::response::ignore : tv::response::touch;
         });
         // Queries.
-        (void)world.queryRect(world.rect(player).at(world.rect(player).position() + Vec2{-8, -8}), player);
+        (void)world.queryRect(world.rect(player).at(world.rect(player).position() + Vec2{-8, -8}),
+                              player);
         (void)world.queryRect({0, 0, 64, 64});
         (void)world.queryPoint({33.5, 165});
         (void)world.querySegment({5, 100}, {315, 150});
@@ -172,7 +180,8 @@ inline std::uint32_t le32(const std::vector<std::uint8_t>& b, std::size_t at) {
          std::uint32_t{b[at + 3]} << 24;
 }
 inline void put32(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
+  for (int i = 0; i < 4; ++i)
+    b[at + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
 // Chunk starts (the 8-byte chunk headers) of a well-formed recording.

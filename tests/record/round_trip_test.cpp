@@ -42,7 +42,8 @@ TEST(RoundTrip, EveryCallKindReplaysWithZeroDivergencesAndEqualState) {
     for (const tv::CallInfo& c : replay.calls(f)) seen[static_cast<std::size_t>(c.kind)] = true;
   }
   for (std::size_t k = 0; k < seen.size(); ++k) {
-    EXPECT_TRUE(seen[k]) << "no " << tv::callKindName(static_cast<tv::CallKind>(k)) << " call recorded";
+    EXPECT_TRUE(seen[k]) << "no " << tv::callKindName(static_cast<tv::CallKind>(k))
+                         << " call recorded";
   }
 }
 
@@ -54,13 +55,18 @@ TEST(RoundTrip, ResultsEqualTheGameBitForBitCallByCall) {
   std::vector<Vec2> recorded;
   for (std::uint64_t f = 0; f < replay.frames(); ++f) {
     for (const tv::CallInfo& c : replay.calls(f)) {
-      if (c.kind == tv::CallKind::move || c.kind == tv::CallKind::moverMove) recorded.push_back(c.position);
+      if (c.kind == tv::CallKind::move || c.kind == tv::CallKind::moverMove)
+        recorded.push_back(c.position);
     }
   }
   ASSERT_EQ(recorded.size(), s.movePositions.size());
   for (std::size_t i = 0; i < recorded.size(); ++i) {
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(recorded[i].x), std::bit_cast<std::uint64_t>(s.movePositions[i].x)) << i;
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(recorded[i].y), std::bit_cast<std::uint64_t>(s.movePositions[i].y)) << i;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(recorded[i].x),
+              std::bit_cast<std::uint64_t>(s.movePositions[i].x))
+        << i;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(recorded[i].y),
+              std::bit_cast<std::uint64_t>(s.movePositions[i].y))
+        << i;
   }
 }
 
@@ -101,7 +107,8 @@ TEST(RoundTrip, RecordingToAPathThatCannotBeWrittenFailsAtOnceNamingIt) {
     tv::Recorder r("/nonexistent-dir/x.tvrec");
     FAIL() << "no error";
   } catch (const tv::Error& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/x.tvrec"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/x.tvrec"), std::string::npos)
+        << e.what();
   }
 }
 

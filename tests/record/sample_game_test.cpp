@@ -57,7 +57,8 @@ TEST(WhatIf, DiscreteTunnelsThroughTheThinWallWhereTheRecordedContinuousRunDidNo
   ASSERT_TRUE(w.firstDifferentFrame);
   bool bulletThrough = false;
   for (const tv::MoveDifference& m : w.differences) {
-    bulletThrough = bulletThrough || (m.tunnelled && discrete.label(m.item).rfind("bullet", 0) == 0);
+    bulletThrough =
+        bulletThrough || (m.tunnelled && discrete.label(m.item).rfind("bullet", 0) == 0);
   }
   EXPECT_TRUE(bulletThrough);
 }

@@ -79,7 +79,8 @@ class Group {
       code = kP1;
     } else {
       const double d = v - base;
-      if (std::isfinite(d) && std::fabs(d) <= static_cast<double>(std::numeric_limits<float>::max())) {
+      if (std::isfinite(d) &&
+          std::fabs(d) <= static_cast<double>(std::numeric_limits<float>::max())) {
         const auto f = static_cast<float>(d);
         if (sameBits(static_cast<double>(f), d) && sameBits(base + static_cast<double>(f), v)) {
           code = kF32;
@@ -109,7 +110,9 @@ class In {
 
   [[nodiscard]] std::size_t left() const { return static_cast<std::size_t>(end_ - p_); }
   [[nodiscard]] bool done() const { return p_ == end_; }
-  [[nodiscard]] std::uint64_t offset() const { return base_ + static_cast<std::uint64_t>(p_ - begin_); }
+  [[nodiscard]] std::uint64_t offset() const {
+    return base_ + static_cast<std::uint64_t>(p_ - begin_);
+  }
   [[nodiscard]] std::uint64_t frame() const { return frame_; }
   void setFrame(std::uint64_t f) { frame_ = f; }
 
@@ -206,7 +209,8 @@ class GroupIn {
  public:
   GroupIn(In& in, std::string_view what) : in_(in), what_(what), codes_(in.u8(what)) {}
   double get(double p0, double p1, double base = 0.0) {
-    const auto code = static_cast<std::uint8_t>((static_cast<unsigned>(codes_) >> (2u * n_++)) & 3u);
+    const auto code =
+        static_cast<std::uint8_t>((static_cast<unsigned>(codes_) >> (2u * n_++)) & 3u);
     const std::uint64_t at = in_.offset();
     double v;
     switch (code) {

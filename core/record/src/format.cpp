@@ -10,7 +10,9 @@ namespace tv::rec {
 
 namespace {
 
-constexpr std::uint8_t kindOf(CallKind k) { return static_cast<std::uint8_t>(k); }
+constexpr std::uint8_t kindOf(CallKind k) {
+  return static_cast<std::uint8_t>(k);
+}
 
 // Normals come from a handful of constants; anything else is sent whole.
 std::uint8_t normalCode(Vec2 n) {
@@ -44,7 +46,8 @@ std::uint8_t answerCode(ResponseId r) {
 
 std::uint64_t cellCount(double cellSize, const Rect& r) {
   const Grid g(cellSize);
-  if (!isFinite(r) || !g.fits(r)) return 0;  // refused by the world itself
+  // Refused by the world itself (and Grid::fits assumes w, h > 0).
+  if (!isFinite(r) || !(r.w > 0 && r.h > 0) || !g.fits(r)) return 0;
   const CellRange c = g.cellsOf(r);
   const double n = (static_cast<double>(c.x1 - c.x0) + 1) * (static_cast<double>(c.y1 - c.y0) + 1);
   return n >= 1e18 ? std::uint64_t{1} << 60 : static_cast<std::uint64_t>(n);
@@ -200,8 +203,7 @@ void Encoder::goal(const Model::Slot& s, Vec2 goal) {
   g.put(goal.y, s.rect.y + s.lastDelta.y, s.rect.y, s.rect.y);
 }
 
-void Encoder::collisions(std::span<const Collision> cs, ItemId self, const Rect& start,
-                         Vec2 goal) {
+void Encoder::collisions(std::span<const Collision> cs, ItemId self, const Rect& start, Vec2 goal) {
   const std::uint32_t ref = self.valid() ? self.index : 0;
   Vec2 legStart = start.position(), legGoal = goal;
   Rect prevItem = start, prevOther;
@@ -315,8 +317,8 @@ void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
   std::uint8_t flags = item(id.index);
   std::uint8_t extras = static_cast<std::uint8_t>(
       (o.broad == BroadPhase::bounds ? kBounds : 0) |
-      (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) |
-      (!answers.empty() ? kHasAnswers : 0) | (!legs.empty() ? kHasLegs : 0));
+      (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
+      (!legs.empty() ? kHasLegs : 0));
   Model::Slot& s = model.slots[id.index];
   const Rect start = s.rect;
   const bool free = r.collisions.empty() && r.position == goalPos &&
@@ -379,8 +381,8 @@ void Encoder::project(const Rect& rect, Vec2 goalPos, const MoveOptions& o, cons
   std::uint8_t flags = 0;
   const std::uint8_t extras = static_cast<std::uint8_t>(
       (o.broad == BroadPhase::bounds ? kBounds : 0) |
-      (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) |
-      (!answers.empty() ? kHasAnswers : 0) | (!legs.empty() ? kHasLegs : 0));
+      (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
+      (!legs.empty() ? kHasLegs : 0));
   if (extras) {
     flags |= kExtras;
     out.u8(extras);
@@ -471,7 +473,8 @@ void Encoder::anyOverlap(const Rect& r, ItemId skip, bool any, std::span<const A
   const std::size_t at = out.b.size();
   out.u8(kindOf(CallKind::anyOverlap));
   Rect p;
-  std::uint8_t flags = static_cast<std::uint8_t>((any ? kAny : 0) | (answers.empty() ? 0 : kAnswers));
+  std::uint8_t flags =
+      static_cast<std::uint8_t>((any ? kAny : 0) | (answers.empty() ? 0 : kAnswers));
   if (skip.valid()) {
     flags |= static_cast<std::uint8_t>(kSkipValid | item(skip.index));
     p = model.slots[skip.index].rect;
@@ -608,7 +611,8 @@ void readCollisions(In& in, Model& m, Call& c, std::size_t n, ItemId self, const
     Collision col;
     col.item = self;
     col.other = aliveAt(in, m, ref + in.zigzag("collision other"), "collision other");
-    if (self.valid() && col.other.index == self.index) in.fail("a collision of an item with itself");
+    if (self.valid() && col.other.index == self.index)
+      in.fail("a collision of an item with itself");
     const std::uint8_t flags = in.u8("collision flags");
     col.overlaps = flags & 1;
     col.corner = flags & 2;
@@ -649,7 +653,8 @@ void readCollisions(In& in, Model& m, Call& c, std::size_t n, ItemId self, const
       col.ti = g.get(0.0, prevTi);
     }
     if (!col.overlaps && !(col.ti >= 0.0 && col.ti <= 1.0)) {
-      in.fail("collision ti " + formatNumber(col.ti) + " is outside [0, 1] for a hit that does not overlap");
+      in.fail("collision ti " + formatNumber(col.ti) +
+              " is outside [0, 1] for a hit that does not overlap");
     }
     {
       const Rect o = m.slots[col.other.index].rect;
@@ -699,7 +704,8 @@ void readAnswers(In& in, Model& m, Call& c, ItemId subject) {
   }
   for (std::uint64_t k = 0; k < n; ++k) {
     const std::uint8_t code = in.u8("answer");
-    if ((code & 0xF0) != 0 || (code & 7) > 5) in.fail("answer code " + std::to_string(code) + " is not defined");
+    if ((code & 0xF0) != 0 || (code & 7) > 5)
+      in.fail("answer code " + std::to_string(code) + " is not defined");
     Answer a;
     switch (code & 7) {
       case 4:
@@ -719,7 +725,11 @@ void readAnswers(In& in, Model& m, Call& c, ItemId subject) {
     a.item = subject;
     if (code & 8) {
       const std::uint64_t v = in.varint("answer item");
-      a.item = v == 0 ? ItemId{} : aliveAt(in, m, static_cast<std::int64_t>(std::min<std::uint64_t>(v - 1, 1ull << 40)), "answer item");
+      a.item = v == 0
+                   ? ItemId{}
+                   : aliveAt(in, m,
+                             static_cast<std::int64_t>(std::min<std::uint64_t>(v - 1, 1ull << 40)),
+                             "answer item");
     }
     const std::int64_t base = a.item.valid() ? a.item.index : 0;
     a.other = aliveAt(in, m, base + in.zigzag("answer other"), "answer other");
@@ -756,7 +766,8 @@ int readLimit(In& in, std::string_view what, std::uint64_t max) {
   const std::uint64_t at = in.offset();
   const std::uint64_t v = in.varint(what);
   if (v < 1 || v > max) {
-    in.failAt(at, std::string(what) + " " + std::to_string(v) + " is outside [1, " + std::to_string(max) + "]");
+    in.failAt(at, std::string(what) + " " + std::to_string(v) + " is outside [1, " +
+                      std::to_string(max) + "]");
   }
   return static_cast<int>(v);
 }
@@ -874,7 +885,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   const std::uint8_t flags = kb & 0xF0;
   auto onlyFlags = [&](std::uint8_t allowed) {
     if (flags & ~allowed) {
-      in.failAt(c.offset, "call kind " + std::string(callKindName(c.kind)) + " with undefined flags " + std::to_string(flags));
+      in.failAt(c.offset, "call kind " + std::string(callKindName(c.kind)) +
+                              " with undefined flags " + std::to_string(flags));
     }
   };
   switch (c.kind) {
@@ -967,16 +979,17 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       }
       std::uint8_t extras = 0;
       if (kb & kExtras) {
-        extras = readExtras(in, mover ? static_cast<std::uint8_t>(kHasAnswers | kHasLegs)
-                                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers | kHasLegs));
+        extras = readExtras(
+            in, mover ? static_cast<std::uint8_t>(kHasAnswers | kHasLegs)
+                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers | kHasLegs));
         if (extras & kBounds) c.broad = BroadPhase::bounds;
         if (extras & kLimit) c.maxResponses = readLimit(in, "maxResponses", 4096);
       }
       Model::Slot& s = m.slots[c.item.index];
       c.start = s.rect;
       c.goal = readGoal(in, s, "goal");
-      const bool hull = c.broad == BroadPhase::bounds ||
-                        (mover && m.movers[c.mover].kind == MoverKind::sweep);
+      const bool hull =
+          c.broad == BroadPhase::bounds || (mover && m.movers[c.mover].kind == MoverKind::sweep);
       requireReach(in, m, c.offset, s.rect, c.goal, hull, maxCells, callKindName(c.kind));
       const Vec2 d = c.goal - s.rect.position();
       if (sameBits(s.rect.x + d.x, c.goal.x) && sameBits(s.rect.y + d.y, c.goal.y)) s.lastDelta = d;
@@ -1011,8 +1024,10 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
         c.goal.x = g.get(c.rect.x, 0, c.rect.x);
         c.goal.y = g.get(c.rect.y, 0, c.rect.y);
       }
-      if (!(c.rect.w > 0 && c.rect.h > 0)) in.failAt(c.offset, "project of a rect with w or h <= 0");
-      requireReach(in, m, c.offset, c.rect, c.goal, c.broad == BroadPhase::bounds, maxCells, "project");
+      if (!(c.rect.w > 0 && c.rect.h > 0))
+        in.failAt(c.offset, "project of a rect with w or h <= 0");
+      requireReach(in, m, c.offset, c.rect, c.goal, c.broad == BroadPhase::bounds, maxCells,
+                   "project");
       if (kb & kFree) {
         c.position = c.goal;
       } else {
@@ -1039,7 +1054,10 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       c.rect.y = g.get(p.y, 0);
       c.rect.w = g.get(p.w, 0);
       c.rect.h = g.get(p.h, c.rect.w);
-      requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells, callKindName(c.kind));
+      // The world cannot hold what a negative size means (and would not be asked it).
+      if (c.rect.w < 0 || c.rect.h < 0) in.failAt(c.offset, "a query rect with a negative size");
+      requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells,
+                   callKindName(c.kind));
       if (any) {
         c.any = kb & kAny;
         if (kb & kAnswers) readAnswers(in, m, c, c.skip);
@@ -1065,7 +1083,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
         c.b.x = g.get(c.goal.x, 0, c.goal.x);
         c.b.y = g.get(c.goal.y, 0, c.goal.y);
       }
-      requireReach(in, m, c.offset, Rect{c.goal.x, c.goal.y, 0, 0}, c.b, false, maxCells, "querySegment");
+      requireReach(in, m, c.offset, Rect{c.goal.x, c.goal.y, 0, 0}, c.b, false, maxCells,
+                   "querySegment");
       const std::size_t n = in.count("segment hit count", 3);
       std::int64_t prev = 0;
       for (std::size_t k = 0; k < n; ++k) {
@@ -1105,17 +1124,20 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       const std::size_t n = in.count("batch size", 3);
       for (std::size_t k = 0; k < n; ++k) {
         BodyOut b;
-        b.item = aliveAt(in, m, static_cast<std::int64_t>(m.prevItem) + in.zigzag("batch item"), "batch item");
+        b.item = aliveAt(in, m, static_cast<std::int64_t>(m.prevItem) + in.zigzag("batch item"),
+                         "batch item");
         m.prevItem = b.item.index;
         for (const BodyOut& o : c.bodies) {
-          if (o.item == b.item) in.fail("batch moves item " + std::to_string(b.item.index) + " twice");
+          if (o.item == b.item)
+            in.fail("batch moves item " + std::to_string(b.item.index) + " twice");
         }
         Model::Slot& s = m.slots[b.item.index];
         b.start = s.rect;
         b.goal = readGoal(in, s, "batch goal");
         requireReach(in, m, c.offset, s.rect, b.goal, false, maxCells, "batch move");
         const Vec2 d = b.goal - s.rect.position();
-        if (sameBits(s.rect.x + d.x, b.goal.x) && sameBits(s.rect.y + d.y, b.goal.y)) s.lastDelta = d;
+        if (sameBits(s.rect.x + d.x, b.goal.x) && sameBits(s.rect.y + d.y, b.goal.y))
+          s.lastDelta = d;
         c.bodies.push_back(b);
       }
       for (BodyOut& b : c.bodies) {
@@ -1135,7 +1157,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       onlyFlags(0);
       const std::uint64_t index = in.varint("label item index");
       const std::uint64_t gen = in.varint("label item generation");
-      if (index >= 0x7FFFFFFFu || gen > 0xFFFFFFFFu) in.failAt(c.offset, "label of an impossible item");
+      if (index >= 0x7FFFFFFFu || gen > 0xFFFFFFFFu)
+        in.failAt(c.offset, "label of an impossible item");
       c.item = {static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(gen)};
       c.name = in.str("label", kMaxName);
       c.category = in.str("category", kMaxName);
@@ -1148,7 +1171,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       if (c.frameTime < 0) in.failAt(c.offset, "advance of a negative frame time");
       m.prevFrameTime = c.frameTime;
       const std::uint64_t t = in.varint("advance ticks");
-      if (t > (1u << 20)) in.failAt(c.offset, "advance of " + std::to_string(t) + " ticks (at most 2^20)");
+      if (t > (1u << 20))
+        in.failAt(c.offset, "advance of " + std::to_string(t) + " ticks (at most 2^20)");
       c.ticks = static_cast<std::int64_t>(t);
       return;
     }

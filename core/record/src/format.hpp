@@ -97,9 +97,9 @@ struct Model {
   std::uint32_t prevItem = 0;
   Rect prevAdd;
   double prevFrameTime = 0.0;
-  std::vector<MoverSpec> movers;     // by id, over the whole file
-  std::vector<bool> moverDefined;    // since the last keyframe
-  std::uint64_t cells = 0;           // cells the live items are registered in (the budget)
+  std::vector<MoverSpec> movers;   // by id, over the whole file
+  std::vector<bool> moverDefined;  // since the last keyframe
+  std::uint64_t cells = 0;         // cells the live items are registered in (the budget)
 
   void reset(const WorldState& s);
   [[nodiscard]] WorldState state() const;
@@ -126,8 +126,8 @@ class Encoder {
   void anyOverlap(const Rect& r, ItemId skip, bool any, std::span<const Answer> answers);
   void addResponse(std::string_view name);
   void moverMove(std::uint32_t mover, bool define, const MoverSpec& spec, ItemId id,
-                 const Rect& start, Vec2 goal, const MoveResult& r,
-                 std::span<const Answer> answers, std::span<const Leg> legs);
+                 const Rect& start, Vec2 goal, const MoveResult& r, std::span<const Answer> answers,
+                 std::span<const Leg> legs);
   void batch(std::span<const BatchMove> moves, int maxEvents, const Batch& b,
              std::span<const Answer> answers, std::span<const Leg> legs);
   void label(ItemId id, std::string_view label, std::string_view category);

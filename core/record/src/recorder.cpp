@@ -57,8 +57,8 @@ struct Recorder::Impl {
 Recorder::Recorder(const std::string& path, RecorderOptions options)
     : impl_(std::make_unique<Impl>()) {
   if (options.keyframeEvery < 1 || options.keyframeEvery > (1u << 20)) {
-    fail("tv::Recorder", "keyframeEvery must be in [1, 2^20], but was " +
-                             std::to_string(options.keyframeEvery));
+    fail("tv::Recorder",
+         "keyframeEvery must be in [1, 2^20], but was " + std::to_string(options.keyframeEvery));
   }
   impl_->options = options;
   impl_->path = path;
@@ -70,8 +70,8 @@ Recorder::Recorder(const std::string& path, RecorderOptions options)
 
 Recorder::Recorder(RecorderOptions options) : impl_(std::make_unique<Impl>()) {
   if (options.keyframeEvery < 1 || options.keyframeEvery > (1u << 20)) {
-    fail("tv::Recorder", "keyframeEvery must be in [1, 2^20], but was " +
-                             std::to_string(options.keyframeEvery));
+    fail("tv::Recorder",
+         "keyframeEvery must be in [1, 2^20], but was " + std::to_string(options.keyframeEvery));
   }
   impl_->options = options;
 }
@@ -101,7 +101,8 @@ void Recorder::attached(const World& world) {
   Impl& d = *impl_;
   if (d.started || d.stopped) {
     // One recording, one attachment: another would need another header.
-    if (error_.empty()) error_ = "tv::Recorder: attached again after it was closed; make a new Recorder";
+    if (error_.empty())
+      error_ = "tv::Recorder: attached again after it was closed; make a new Recorder";
     return;
   }
   d.world = const_cast<World*>(&world);  // attach() took the world non-const
@@ -141,7 +142,8 @@ void Recorder::frame() {
   std::vector<std::uint8_t>& payload = d.enc.out.b;
   std::uint8_t head[8];
   const auto len = static_cast<std::uint32_t>(payload.size());
-  const auto crc = static_cast<std::uint32_t>(::crc32(0, payload.data(), static_cast<uInt>(payload.size())));
+  const auto crc =
+      static_cast<std::uint32_t>(::crc32(0, payload.data(), static_cast<uInt>(payload.size())));
   for (int i = 0; i < 4; ++i) {
     head[i] = static_cast<std::uint8_t>(len >> (8 * i));
     head[4 + i] = static_cast<std::uint8_t>(crc >> (8 * i));
@@ -216,15 +218,15 @@ void Recorder::close() {
 
 // [SECTION] observer reports ----------------------------------------------------------------------
 
-#define TV_RECORDING()                   \
-  Impl& d = *impl_;                      \
-  if (!d.started || d.stopped) return;   \
+#define TV_RECORDING()                 \
+  Impl& d = *impl_;                    \
+  if (!d.started || d.stopped) return; \
   ++calls_
 
 void Recorder::added(ItemId id, const Rect& r) {
   TV_RECORDING();
-  const std::size_t expect = d.enc.model.freeSlots.empty() ? d.enc.model.slots.size()
-                                                           : d.enc.model.freeSlots.back();
+  const std::size_t expect =
+      d.enc.model.freeSlots.empty() ? d.enc.model.slots.size() : d.enc.model.freeSlots.back();
   if (id.index != expect) {
     error_ = "tv::Recorder: lost track of the world's slots (add returned " +
              std::to_string(id.index) + ", expected " + std::to_string(expect) + ")";

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <unordered_map>
 
@@ -18,50 +18,53 @@
 
 namespace tv {
 
-namespace rec {
-
-thread_local LegCursor tLegs;
-
-Leg replayedResponse(const Collision& c, Vec2 goal) {
-  LegCursor& cur = tLegs;
-  if (!cur.whatIf && cur.legs && cur.next < cur.legs->size()) return (*cur.legs)[cur.next++];
-  if (!cur.whatIf) cur.overrun = true;
-  return slideResponse(c, goal);
-}
-
-}  // namespace rec
-
 std::string_view callKindName(CallKind k) {
   switch (k) {
-    case CallKind::add: return "add";
-    case CallKind::remove: return "remove";
-    case CallKind::update: return "update";
-    case CallKind::move: return "move";
-    case CallKind::check: return "check";
-    case CallKind::project: return "project";
-    case CallKind::queryRect: return "queryRect";
-    case CallKind::queryPoint: return "queryPoint";
-    case CallKind::querySegment: return "querySegment";
-    case CallKind::anyOverlap: return "anyOverlap";
-    case CallKind::addResponse: return "addResponse";
-    case CallKind::moverMove: return "moverMove";
-    case CallKind::batchStep: return "batchStep";
-    case CallKind::label: return "label";
-    case CallKind::advance: return "advance";
+    case CallKind::add:
+      return "add";
+    case CallKind::remove:
+      return "remove";
+    case CallKind::update:
+      return "update";
+    case CallKind::move:
+      return "move";
+    case CallKind::check:
+      return "check";
+    case CallKind::project:
+      return "project";
+    case CallKind::queryRect:
+      return "queryRect";
+    case CallKind::queryPoint:
+      return "queryPoint";
+    case CallKind::querySegment:
+      return "querySegment";
+    case CallKind::anyOverlap:
+      return "anyOverlap";
+    case CallKind::addResponse:
+      return "addResponse";
+    case CallKind::moverMove:
+      return "moverMove";
+    case CallKind::batchStep:
+      return "batchStep";
+    case CallKind::label:
+      return "label";
+    case CallKind::advance:
+      return "advance";
   }
   return "unknown";
 }
 
 std::string Divergence::report() const {
-  std::string s = "divergence at frame " + std::to_string(frame) + ", call " + std::to_string(call) +
-                  " (" + std::string(callKindName(kind));
+  std::string s = "divergence at frame " + std::to_string(frame) + ", call " +
+                  std::to_string(call) + " (" + std::string(callKindName(kind));
   if (!item.empty()) s += " " + item;
   s += ", byte " + std::to_string(offset) + ")\n";
   s += "  " + what + ": recorded " + expected + ", replayed " + got + "\n";
   return s;
 }
 
-// [SECTION] opening and indexing -------------------------------------------------------------------
+// [SECTION] opening and indexing
+// -------------------------------------------------------------------
 
 namespace {
 
@@ -71,7 +74,8 @@ std::uint32_t le32(const std::uint8_t* p) {
 }
 
 [[noreturn]] void fileFail(std::uint64_t at, std::uint64_t frame, const std::string& what) {
-  fail("tv::Replay", "byte " + std::to_string(at) + " (frame " + std::to_string(frame) + "): " + what);
+  fail("tv::Replay",
+       "byte " + std::to_string(at) + " (frame " + std::to_string(frame) + "): " + what);
 }
 
 }  // namespace
@@ -80,14 +84,18 @@ void Replay::Impl::index() {
   const std::size_t size = bytes.size();
   summary.bytes = size;
   if (size < rec::kHeaderSize) {
-    fileFail(0, 0, "the file is " + std::to_string(size) + " bytes, shorter than the 32-byte header");
+    fileFail(0, 0,
+             "the file is " + std::to_string(size) + " bytes, shorter than the 32-byte header");
   }
-  if (std::memcmp(bytes.data(), rec::kMagic, 8) != 0) fileFail(0, 0, "not a .tvrec file (wrong magic)");
-  const unsigned major = bytes[8] | (bytes[9] << 8), minor = bytes[10] | (bytes[11] << 8);
+  if (std::memcmp(bytes.data(), rec::kMagic, 8) != 0)
+    fileFail(0, 0, "not a .tvrec file (wrong magic)");
+  const unsigned major = unsigned{bytes[8]} | (unsigned{bytes[9]} << 8u);
+  const unsigned minor = unsigned{bytes[10]} | (unsigned{bytes[11]} << 8u);
   if (major != rec::kVersionMajor) {
-    fileFail(8, 0, "format version " + std::to_string(major) + "." + std::to_string(minor) +
-                       " is not readable by this reader (version " +
-                       std::to_string(rec::kVersionMajor) + "." + std::to_string(rec::kVersionMinor) + ")");
+    fileFail(8, 0,
+             "format version " + std::to_string(major) + "." + std::to_string(minor) +
+                 " is not readable by this reader (version " + std::to_string(rec::kVersionMajor) +
+                 "." + std::to_string(rec::kVersionMinor) + ")");
   }
   if (le32(bytes.data() + 28) != static_cast<std::uint32_t>(::crc32(0, bytes.data(), 28))) {
     fileFail(28, 0, "header checksum mismatch");
@@ -141,7 +149,8 @@ void Replay::Impl::index() {
       }
       const std::string what = "chunk length " + std::to_string(len) + " is over the 2^30 limit";
       if (!options.tolerant) fileFail(pos, f, what);
-      warnings.push_back("byte " + std::to_string(pos) + " (frame " + std::to_string(f) + "): " + what + "; stopped there");
+      warnings.push_back("byte " + std::to_string(pos) + " (frame " + std::to_string(f) +
+                         "): " + what + "; stopped there");
       break;
     }
     const std::uint8_t* payload = bytes.data() + pos + 8;
@@ -191,9 +200,10 @@ void Replay::Impl::index() {
   }
   summary.frames = frames.size();
   for (auto& [id, counts] : answerCounts) {
-    const auto best = std::max_element(counts.begin(), counts.end(), [](const auto& a, const auto& b) {
-      return a.second < b.second || (a.second == b.second && a.first > b.first);
-    });
+    const auto best =
+        std::max_element(counts.begin(), counts.end(), [](const auto& a, const auto& b) {
+          return a.second < b.second || (a.second == b.second && a.first > b.first);
+        });
     commonAnswer[id] = best->first;
   }
 }
@@ -201,7 +211,9 @@ void Replay::Impl::index() {
 bool Replay::Impl::beginFrame(rec::In& src, rec::Model& m, WorldState& ws, std::uint64_t f) {
   const std::uint64_t at = src.offset();
   const std::uint64_t n = src.varint("frame number");
-  if (n != f) src.failAt(at, "frame number " + std::to_string(n) + " where frame " + std::to_string(f) + " was due");
+  if (n != f)
+    src.failAt(
+        at, "frame number " + std::to_string(n) + " where frame " + std::to_string(f) + " was due");
   const std::uint8_t flags = src.u8("frame flags");
   if (flags > 1) src.fail("frame flags " + std::to_string(flags) + " are not defined");
   if (f == 0 && flags == 0) src.fail("frame 0 does not open with a keyframe");
@@ -222,8 +234,9 @@ std::size_t Replay::Impl::itemFor(ItemId id, std::uint64_t when) {
   return it->second;
 }
 
-void Replay::Impl::tally(const rec::Call& c, std::uint64_t f,
-                         std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers) {
+void Replay::Impl::tally(
+    const rec::Call& c, std::uint64_t f,
+    std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers) {
   switch (c.kind) {
     case CallKind::label: {
       labels[c.item] = {c.name, c.category};
@@ -268,7 +281,8 @@ void Replay::Impl::tally(const rec::Call& c, std::uint64_t f,
   for (const rec::Answer& a : c.answers) {
     if (!a.item.valid()) continue;
     auto& v = answers[a.item];
-    auto it = std::find_if(v.begin(), v.end(), [&](const auto& p) { return p.first == a.response; });
+    auto it =
+        std::find_if(v.begin(), v.end(), [&](const auto& p) { return p.first == a.response; });
     if (it == v.end()) {
       v.emplace_back(a.response, 1);
     } else {
@@ -309,12 +323,21 @@ Replay Replay::fromBytes(std::vector<std::uint8_t> bytes, ReplayOptions options)
   return r;
 }
 
-// [SECTION] what is in it --------------------------------------------------------------------------
+// [SECTION] what is in it
+// --------------------------------------------------------------------------
 
-std::uint64_t Replay::frames() const { return impl_->frames.size(); }
-double Replay::cellSize() const { return impl_->cellSize; }
-std::uint64_t Replay::fileSize() const { return impl_->bytes.size(); }
-std::span<const std::string> Replay::warnings() const { return impl_->warnings; }
+std::uint64_t Replay::frames() const {
+  return impl_->frames.size();
+}
+double Replay::cellSize() const {
+  return impl_->cellSize;
+}
+std::uint64_t Replay::fileSize() const {
+  return impl_->bytes.size();
+}
+std::span<const std::string> Replay::warnings() const {
+  return impl_->warnings;
+}
 std::span<const RecordedItem> Replay::items() const {
   for (RecordedItem& r : impl_->items) {
     auto it = impl_->labels.find(r.id);
@@ -327,8 +350,12 @@ std::span<const RecordedItem> Replay::items() const {
   }
   return impl_->items;
 }
-const ReplayOptions& Replay::options() const { return impl_->options; }
-const ReplaySummary& Replay::summary() const { return impl_->summary; }
+const ReplayOptions& Replay::options() const {
+  return impl_->options;
+}
+const ReplaySummary& Replay::summary() const {
+  return impl_->summary;
+}
 std::uint32_t Replay::callCount(std::uint64_t frame) const {
   if (frame >= impl_->frames.size()) {
     fail("tv::Replay::callCount", "frame " + std::to_string(frame) + " is past the last (" +
@@ -337,7 +364,9 @@ std::uint32_t Replay::callCount(std::uint64_t frame) const {
   return impl_->frames[frame].calls;
 }
 
-std::string Replay::label(ItemId id) const { return impl_->labelOf(id); }
+std::string Replay::label(ItemId id) const {
+  return impl_->labelOf(id);
+}
 
 std::string Replay::Impl::labelOf(ItemId id) const {
   if (!id.valid()) return {};
@@ -404,17 +433,18 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
             info.position = c.position;
             info.hits = static_cast<std::uint32_t>(c.collisions.size());
             if (c.kind == CallKind::moverMove) info.mover = m.movers[c.mover].name();
-            info.summary = (c.kind == CallKind::moverMove ? info.mover + " move" : name) +
-                           (who.empty() ? "" : " " + who) + " " + fmt(c.start.position()) +
-                           " -> " + fmt(c.goal) + ": " +
-                           (info.hits ? std::to_string(info.hits) + (info.hits == 1 ? " hit" : " hits")
-                                      : "free") +
-                           (c.position == c.goal ? "" : ", ended at " + fmt(c.position));
+            info.summary =
+                (c.kind == CallKind::moverMove ? info.mover + " move" : name) +
+                (who.empty() ? "" : " " + who) + " " + fmt(c.start.position()) + " -> " +
+                fmt(c.goal) + ": " +
+                (info.hits ? std::to_string(info.hits) + (info.hits == 1 ? " hit" : " hits")
+                           : "free") +
+                (c.position == c.goal ? "" : ", ended at " + fmt(c.position));
             break;
           case CallKind::batchStep:
             info.hits = static_cast<std::uint32_t>(c.collisions.size());
-            info.summary = "batch of " + std::to_string(c.bodies.size()) + " moves: " +
-                           std::to_string(info.hits) + " hits";
+            info.summary = "batch of " + std::to_string(c.bodies.size()) +
+                           " moves: " + std::to_string(info.hits) + " hits";
             break;
           case CallKind::queryRect:
           case CallKind::queryPoint:
@@ -450,7 +480,8 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
                            (c.category.empty() ? "" : " (" + c.category + ")");
             break;
           case CallKind::advance:
-            info.summary = "advance " + formatNumber(c.frameTime) + " s: " + std::to_string(c.ticks) + " ticks";
+            info.summary = "advance " + formatNumber(c.frameTime) +
+                           " s: " + std::to_string(c.ticks) + " ticks";
             break;
         }
         out.push_back(std::move(info));

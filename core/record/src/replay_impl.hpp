@@ -26,9 +26,6 @@ struct LegCursor {
   bool overrun = false;
   bool whatIf = false;  // what-if: recorded legs belong to other collisions; slide instead
 };
-extern thread_local LegCursor tLegs;
-// Registered under every recorded user response's name.
-Leg replayedResponse(const Collision& c, Vec2 goal);
 
 }  // namespace rec
 
@@ -76,8 +73,9 @@ struct Replay::Impl {
   void index();
   bool beginFrame(rec::In& in, rec::Model& m, WorldState& ws, std::uint64_t f);
   std::size_t itemFor(ItemId id, std::uint64_t frame);
-  void tally(const rec::Call& c, std::uint64_t f,
-             std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers);
+  void tally(
+      const rec::Call& c, std::uint64_t f,
+      std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers);
   [[nodiscard]] std::string labelOf(ItemId id) const;
 
   void enterFrame(std::uint64_t f, bool restore);

@@ -8,9 +8,27 @@
 
 namespace tv {
 
+namespace rec {
 namespace {
 
-std::string fmt(double v) { return formatNumber(v); }
+thread_local LegCursor tLegs;
+
+// Registered under every recorded user response's name: hands back the recorded legs in order.
+Leg replayedResponse(const Collision& c, Vec2 goal) {
+  LegCursor& cur = tLegs;
+  if (!cur.whatIf && cur.legs && cur.next < cur.legs->size()) return (*cur.legs)[cur.next++];
+  if (!cur.whatIf) cur.overrun = true;
+  return slideResponse(c, goal);
+}
+
+}  // namespace
+}  // namespace rec
+
+namespace {
+
+std::string fmt(double v) {
+  return formatNumber(v);
+}
 std::string fmt(Vec2 v) {
   std::string s = "(";
   s += formatNumber(v.x);
@@ -34,7 +52,9 @@ std::string fmt(const Rect& r) {
 std::string fmt(ItemId id) {
   return id.valid() ? std::to_string(id.index) + "." + std::to_string(id.generation) : "none";
 }
-bool same(Vec2 a, Vec2 b) { return rec::sameBits(a.x, b.x) && rec::sameBits(a.y, b.y); }
+bool same(Vec2 a, Vec2 b) {
+  return rec::sameBits(a.x, b.x) && rec::sameBits(a.y, b.y);
+}
 bool same(const Rect& a, const Rect& b) {
   return rec::sameBits(a.x, b.x) && rec::sameBits(a.y, b.y) && rec::sameBits(a.w, b.w) &&
          rec::sameBits(a.h, b.h);
@@ -60,7 +80,8 @@ struct ReplayFilter {
   }
   ResponseId operator()(ItemId item, ItemId other) {
     if (c.answersInOrder && exact) {
-      if (next < c.answers.size() && c.answers[next].item == item && c.answers[next].other == other) {
+      if (next < c.answers.size() && c.answers[next].item == item &&
+          c.answers[next].other == other) {
         return c.answers[next++].response;
       }
     } else if (const rec::Answer* a = find(item, other)) {
@@ -89,7 +110,9 @@ void classify(const World& w, ItemId item, const Rect& S, const Rect& E, const R
     const auto through = [](double s0, double s1, double e0, double e1, double o0, double o1) {
       return (s1 <= o0 && e0 >= o1) || (e1 <= o0 && s0 >= o1);
     };
-    const auto spans = [](double a0, double a1, double o0, double o1) { return a0 < o1 && o0 < a1; };
+    const auto spans = [](double a0, double a1, double o0, double o1) {
+      return a0 < o1 && o0 < a1;
+    };
     if (through(S.x, S.right(), E.x, E.right(), O.x, O.right()) &&
         spans(S.y, S.bottom(), O.y, O.bottom()) && spans(E.y, E.bottom(), O.y, O.bottom())) {
       tunnelled = true;
@@ -185,15 +208,19 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
       const std::string p = prefix + "collision " + std::to_string(i) + " ";
       if (g.other != e.other) diverge(p + "other", labelOf(e.other), labelOf(g.other));
       if (g.item != e.item) diverge(p + "item", fmt(e.item), fmt(g.item));
-      if (g.overlaps != e.overlaps) diverge(p + "overlaps", e.overlaps ? "yes" : "no", g.overlaps ? "yes" : "no");
-      if (g.corner != e.corner) diverge(p + "corner", e.corner ? "yes" : "no", g.corner ? "yes" : "no");
+      if (g.overlaps != e.overlaps)
+        diverge(p + "overlaps", e.overlaps ? "yes" : "no", g.overlaps ? "yes" : "no");
+      if (g.corner != e.corner)
+        diverge(p + "corner", e.corner ? "yes" : "no", g.corner ? "yes" : "no");
       if (!rec::sameBits(g.ti, e.ti)) diverge(p + "ti", fmt(e.ti), fmt(g.ti));
       if (!same(g.move, e.move)) diverge(p + "move", fmt(e.move), fmt(g.move));
       if (!same(g.normal, e.normal)) diverge(p + "normal", fmt(e.normal), fmt(g.normal));
       if (!same(g.touch, e.touch)) diverge(p + "touch", fmt(e.touch), fmt(g.touch));
       if (!same(g.itemRect, e.itemRect)) diverge(p + "itemRect", fmt(e.itemRect), fmt(g.itemRect));
-      if (!same(g.otherRect, e.otherRect)) diverge(p + "otherRect", fmt(e.otherRect), fmt(g.otherRect));
-      if (g.response != e.response) diverge(p + "response", std::to_string(e.response), std::to_string(g.response));
+      if (!same(g.otherRect, e.otherRect))
+        diverge(p + "otherRect", fmt(e.otherRect), fmt(g.otherRect));
+      if (g.response != e.response)
+        diverge(p + "response", std::to_string(e.response), std::to_string(g.response));
       if (!same(g.target, e.target)) diverge(p + "target", fmt(e.target), fmt(g.target));
     }
   };
@@ -237,7 +264,8 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
     const double distance = length(E.position() - recorded);
     const bool differs = !same(E.position(), recorded);
     if (differs || tunnelled || overlapping) {
-      report->differences.push_back({frame, index, item, recorded, E.position(), distance, tunnelled, overlapping});
+      report->differences.push_back(
+          {frame, index, item, recorded, E.position(), distance, tunnelled, overlapping});
     }
     if (tunnelled) ++report->tunnelled;
     if (overlapping) ++report->overlapping;
@@ -308,7 +336,8 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
         }
         const MoverSpec& spec = model.movers[c.mover];
         auto& m = movers[c.mover];
-        if (!m || m->spec().name() != spec.name() || !rec::sameBits(m->spec().maxStep, spec.maxStep) ||
+        if (!m || m->spec().name() != spec.name() ||
+            !rec::sameBits(m->spec().maxStep, spec.maxStep) ||
             !rec::sameBits(m->spec().safetyFraction, spec.safetyFraction)) {
           m = std::make_unique<Mover>(spec);
         }
@@ -345,7 +374,8 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
         const std::vector<SegmentHit> got = world->querySegment(c.goal, c.b);
         if (!compare) break;
         if (got.size() != c.segment.size()) {
-          diverge("querySegment result count", std::to_string(c.segment.size()), std::to_string(got.size()));
+          diverge("querySegment result count", std::to_string(c.segment.size()),
+                  std::to_string(got.size()));
         }
         for (std::size_t i = 0; i < std::min(got.size(), c.segment.size()); ++i) {
           const SegmentHit &g = got[i], &e = c.segment[i];
@@ -362,7 +392,8 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
       case CallKind::anyOverlap: {
         if (!exact) break;
         const bool any = world->anyOverlap(c.rect, c.skip, filter);
-        if (compare && any != c.any) diverge("anyOverlap result", c.any ? "yes" : "no", any ? "yes" : "no");
+        if (compare && any != c.any)
+          diverge("anyOverlap result", c.any ? "yes" : "no", any ? "yes" : "no");
         break;
       }
       case CallKind::addResponse:
@@ -382,10 +413,12 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
             ++report->moves;
             const double distance = length(o.position - b.position);
             if (!same(o.position, b.position)) {
-              report->differences.push_back({frame, index, b.item, b.position, o.position, distance, false, false});
+              report->differences.push_back(
+                  {frame, index, b.item, b.position, o.position, distance, false, false});
               if (!report->firstDifferentFrame) report->firstDifferentFrame = frame;
             }
-            if (distance > farAway && !report->firstImplausibleFrame) report->firstImplausibleFrame = frame;
+            if (distance > farAway && !report->firstImplausibleFrame)
+              report->firstImplausibleFrame = frame;
           }
         }
         break;
@@ -410,7 +443,8 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
   return out;
 }
 
-// [SECTION] public ---------------------------------------------------------------------------------
+// [SECTION] public
+// ---------------------------------------------------------------------------------
 
 void Replay::seek(std::uint64_t frame, std::uint32_t call) {
   Impl& d = *impl_;
@@ -434,10 +468,18 @@ void Replay::seek(std::uint64_t frame, std::uint32_t call) {
   d.pendingDivergence.reset();
 }
 
-std::uint64_t Replay::frame() const { return impl_->frame; }
-std::uint32_t Replay::call() const { return impl_->callIndex; }
-const World& Replay::world() const { return *impl_->world; }
-bool Replay::cancelled() const { return impl_->cancelled; }
+std::uint64_t Replay::frame() const {
+  return impl_->frame;
+}
+std::uint32_t Replay::call() const {
+  return impl_->callIndex;
+}
+const World& Replay::world() const {
+  return *impl_->world;
+}
+bool Replay::cancelled() const {
+  return impl_->cancelled;
+}
 
 bool Replay::atEnd() const {
   const Impl& d = *impl_;
