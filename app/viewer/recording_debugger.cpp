@@ -191,8 +191,8 @@ void RecordingDebugger::advance(double seconds) {
   }
   if (n == 16) clock_ = 0.0;
   if (n == 0) return;
-  const std::uint64_t to = std::min(session_->frame() + static_cast<std::uint64_t>(n),
-                                    session_->lastFrame());
+  const std::uint64_t to =
+      std::min(session_->frame() + static_cast<std::uint64_t>(n), session_->lastFrame());
   goTo(to);
   if (to == session_->lastFrame()) paused_ = true;
 }
@@ -227,8 +227,8 @@ void RecordingDebugger::startWhatIf(const MoverSpec& mover, bool updatesAsMoves)
     auto w = std::make_unique<WhatIf>();
     w->mover = mover;
     w->updatesAsMoves = updatesAsMoves;
-    w->session = std::make_unique<ui::RecordingSession>(
-        Replay::open(path_, o), session_->name() + " with " + mover.name());
+    w->session = std::make_unique<ui::RecordingSession>(Replay::open(path_, o),
+                                                        session_->name() + " with " + mover.name());
     w->view.overlays = state_.view.overlays;
     w->view.frameView = state_.view.frameView ? state_.view.frameView : state_.view.camera.view();
     w->view.paused = paused_;
@@ -330,8 +330,7 @@ std::optional<std::string> OpenRecordingDialog::draw() {
     open_ = false;
   }
   ImGui::SetNextWindowSize({520, 0}, ImGuiCond_Always);
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          {0.5f, 0.5f});
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
   if (!ImGui::BeginPopupModal("Open recording", nullptr, ImGuiWindowFlags_NoSavedSettings))
     return std::nullopt;
   std::optional<std::string> chosen;

@@ -48,7 +48,8 @@ class RecordingDebugger {
 
   /// Shows frame `f`, call `k` of it, tracing `item` (the command line's --frame/--call/--item);
   /// UsageError naming the flag when the recording has no such thing.
-  void show(std::uint64_t f, std::optional<std::uint32_t> k, const std::optional<std::string>& item);
+  void show(std::uint64_t f, std::optional<std::uint32_t> k,
+            const std::optional<std::string>& item);
   /// Frames the view as --view asks: everything, the traced move (follow), or a world rect.
   void setView(const ui::PictureOptions& o);
   /// Opens another recording in place; on failure keeps the current one and shows why.
@@ -112,9 +113,9 @@ class RecordingDebugger {
     WhatIfJob job;
   };
   std::unique_ptr<WhatIf> whatIf_;
-  bool showWhatIf_ = false;      // the controls window
+  bool showWhatIf_ = false;  // the controls window
   std::string draftMover_ = "discrete";
-  double draftSubstep_ = 0.0;    // 0: half the smallest item
+  double draftSubstep_ = 0.0;  // 0: half the smallest item
   bool draftUpdates_ = false;
 };
 

@@ -286,8 +286,7 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
           if (r) {
             const double d = std::hypot(m->final.x - r->final.x, m->final.y - r->final.y);
             ImGui::TextColored(colour(d > 0.0 ? pal::kRender : pal::kGood),
-                               d > 0.0 ? "%.3f from the recorded end" : "same end as recorded",
-                               d);
+                               d > 0.0 ? "%.3f from the recorded end" : "same end as recorded", d);
           }
         }
       } else if (const auto id = sessions[k]->selected(); id && sessions[k]->world().has(*id)) {
@@ -377,7 +376,7 @@ void RecordingDebugger::drawWhatIfReport() {
   }
   if (r->firstImplausibleFrame) {
     ImGui::TextColored(colour(kImplausible),
-                       "from frame %" PRIu64 " the game's goals stop making sense", 
+                       "from frame %" PRIu64 " the game's goals stop making sense",
                        *r->firstImplausibleFrame);
     goButton("go##implausible", *r->firstImplausibleFrame, std::nullopt);
     ImGui::TextColored(colour(pal::kDim),
@@ -437,15 +436,15 @@ void RecordingDebugger::drawWhatIfReport() {
 
 void RecordingDebugger::drawWhatIfControls() {
   ImGui::SetNextWindowSize({420, 0}, ImGuiCond_Always);
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          {0.5f, 0.5f});
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
   if (!ImGui::Begin("What-if: re-run the recording (W)", &showWhatIf_,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
-  ImGui::TextWrapped("Every recorded move is made again by another mover, beside the recorded "
-                     "run.");
+  ImGui::TextWrapped(
+      "Every recorded move is made again by another mover, beside the recorded "
+      "run.");
   ImGui::SetNextItemWidth(200.0f);
   if (ImGui::BeginCombo("mover", draftMover_.c_str())) {
     for (const std::string_view m : moverNames()) {
@@ -464,8 +463,9 @@ void RecordingDebugger::drawWhatIfControls() {
   ImGui::EndDisabled();
   ImGui::Checkbox("treat a body's updates as moves", &draftUpdates_);
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("for games that move bodies themselves (x += v*dt, update, push out):\n"
-                      "each update that only changes a position is re-run as a move");
+    ImGui::SetTooltip(
+        "for games that move bodies themselves (x += v*dt, update, push out):\n"
+        "each update that only changes a position is re-run as a move");
   }
   if (ImGui::Button("Run")) {
     try {
@@ -505,12 +505,12 @@ void RecordingDebugger::drawHelp() {
       {"F1, Ctrl+Q", "this window, quit"},
       {"wheel, right drag", "zoom about the cursor, pan"},
       {"left click", "trace the item under the cursor"},
-      {"timeline", "click or drag to scrub; red: divergence, orange: what-if differs, "
-                   "violet: goals stop making sense"},
+      {"timeline",
+       "click or drag to scrub; red: divergence, orange: what-if differs, "
+       "violet: goals stop making sense"},
   };
   ImGui::SetNextWindowSize({560, 0}, ImGuiCond_Always);
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          {0.5f, 0.5f});
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
   if (ImGui::Begin("Help: recordings", &showHelp_,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     if (ImGui::BeginTable("keys", 2)) {
