@@ -399,6 +399,7 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
     fail("tv::Replay::calls", "frame " + std::to_string(frame) + " is past the last (" +
                                   std::to_string(d.frames.size() - 1) + ")");
   }
+  if (d.callsFrame == frame) return d.callsCache;
   // Decode from the nearest keyframe: the model (not the world) gives each call's context.
   const auto kf = std::upper_bound(d.keyframes.begin(), d.keyframes.end(), frame);
   const std::uint64_t from = *(kf - 1);
@@ -489,6 +490,8 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
       ++index;
     }
   }
+  impl_->callsFrame = frame;
+  impl_->callsCache = out;
   return out;
 }
 

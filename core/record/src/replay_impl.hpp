@@ -51,6 +51,9 @@ struct Replay::Impl {
   std::unordered_set<ItemId> moving;  // items the recording moves or updates
   ReplaySummary summary;
   bool statefulMovers = false;
+  // calls(frame) decodes from the keyframe: the last answer is kept for a UI asking every frame.
+  std::optional<std::uint64_t> callsFrame;
+  std::vector<CallInfo> callsCache;
 
   // Where the replay is.
   std::unique_ptr<World> world;
