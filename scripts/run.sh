@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job. Builds Release, then:
-# - with a display: opens the debugger (extra arguments go to tv-debugger);
+# - with a display: records the example platformer and opens its recording in the debugger
+#   (extra arguments go to tv-debugger instead);
 # - without one (or with --headless): renders the before/after comparison images into
 #   out/comparisons/, records the sample game and validates its recording, and prints the
 #   tunnelling table, measured.
@@ -16,7 +17,13 @@ if [ "${1:-}" = --headless ]; then
   shift
 fi
 if [ $headless = 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]; }; then
-  if cmake --build --preset release --target tv-debugger >&2; then
+  if cmake --build --preset release --target tv-debugger tv-example-platformer >&2; then
+    if [ $# = 0 ]; then
+      mkdir -p out/recordings
+      "$build/app/examples/tv-example-platformer" --frames 600 \
+        --record out/recordings/platformer.tvrec >&2
+      exec "$build/app/viewer/tv-debugger" out/recordings/platformer.tvrec
+    fi
     exec "$build/app/viewer/tv-debugger" "$@"
   fi
   echo "run.sh: the debugger did not build (above); rendering the comparison images instead" >&2

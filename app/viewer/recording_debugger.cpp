@@ -32,8 +32,18 @@ RecordingDebugger::RecordingDebugger(const std::string& path, const ui::Overlays
       pinned_(pinned) {
   state_.view.overlays = overlays;
   state_.view.paused = true;
+  traceBusiest();
   frameAll();
   validation_.start(path_, pinned_);
+}
+
+void RecordingDebugger::traceBusiest() {
+  // Something to look at from the first frame: the item that moves most (the player, usually).
+  const RecordedItem* busiest = nullptr;
+  for (const RecordedItem& r : session_->replay().items()) {
+    if (r.moves > 0 && (!busiest || r.moves > busiest->moves)) busiest = &r;
+  }
+  if (busiest) session_->select(busiest->id);
 }
 
 RecordingDebugger::~RecordingDebugger() = default;
@@ -44,6 +54,7 @@ void RecordingDebugger::reopen(const std::string& path) {
     path_ = path;
     session_ = std::move(next);
     whatIf_.reset();
+    traceBusiest();
     paused_ = true;
     message_.clear();
     frameAll();
@@ -180,8 +191,8 @@ void RecordingDebugger::advance(double seconds) {
   }
   if (n == 16) clock_ = 0.0;
   if (n == 0) return;
-  const std::uint64_t to = std::min(session_->frame() + static_cast<std::uint64_t>(n),
-                                    session_->lastFrame());
+  const std::uint64_t to =
+      std::min(session_->frame() + static_cast<std::uint64_t>(n), session_->lastFrame());
   goTo(to);
   if (to == session_->lastFrame()) paused_ = true;
 }
@@ -216,8 +227,8 @@ void RecordingDebugger::startWhatIf(const MoverSpec& mover, bool updatesAsMoves)
     auto w = std::make_unique<WhatIf>();
     w->mover = mover;
     w->updatesAsMoves = updatesAsMoves;
-    w->session = std::make_unique<ui::RecordingSession>(
-        Replay::open(path_, o), session_->name() + " with " + mover.name());
+    w->session = std::make_unique<ui::RecordingSession>(Replay::open(path_, o),
+                                                        session_->name() + " with " + mover.name());
     w->view.overlays = state_.view.overlays;
     w->view.frameView = state_.view.frameView ? state_.view.frameView : state_.view.camera.view();
     w->view.paused = paused_;
@@ -319,8 +330,7 @@ std::optional<std::string> OpenRecordingDialog::draw() {
     open_ = false;
   }
   ImGui::SetNextWindowSize({520, 0}, ImGuiCond_Always);
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          {0.5f, 0.5f});
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
   if (!ImGui::BeginPopupModal("Open recording", nullptr, ImGuiWindowFlags_NoSavedSettings))
     return std::nullopt;
   std::optional<std::string> chosen;

@@ -24,8 +24,8 @@
 
 namespace tv::viewer {
 
-/// The File > Open recording... dialog: a path to type (Tab completes .tvrec files of the
-/// current folder, listed below it). Returns the path chosen, once.
+/// The File > Open recording... dialog: a path to type, and the .tvrec files of the folder it
+/// names (or the current one) to click. Returns the path chosen, once.
 class OpenRecordingDialog {
  public:
   void open() { open_ = true; }
@@ -48,7 +48,8 @@ class RecordingDebugger {
 
   /// Shows frame `f`, call `k` of it, tracing `item` (the command line's --frame/--call/--item);
   /// UsageError naming the flag when the recording has no such thing.
-  void show(std::uint64_t f, std::optional<std::uint32_t> k, const std::optional<std::string>& item);
+  void show(std::uint64_t f, std::optional<std::uint32_t> k,
+            const std::optional<std::string>& item);
   /// Frames the view as --view asks: everything, the traced move (follow), or a world rect.
   void setView(const ui::PictureOptions& o);
   /// Opens another recording in place; on failure keeps the current one and shows why.
@@ -76,6 +77,7 @@ class RecordingDebugger {
   void handleKeys(std::span<const KeyPress> keys);
   void syncWhatIf();
   void frameAll();
+  void traceBusiest();
   [[nodiscard]] Rect followRect() const;
   void report(const std::string& what);
 
@@ -111,9 +113,9 @@ class RecordingDebugger {
     WhatIfJob job;
   };
   std::unique_ptr<WhatIf> whatIf_;
-  bool showWhatIf_ = false;      // the controls window
+  bool showWhatIf_ = false;  // the controls window
   std::string draftMover_ = "discrete";
-  double draftSubstep_ = 0.0;    // 0: half the smallest item
+  double draftSubstep_ = 0.0;  // 0: half the smallest item
   bool draftUpdates_ = false;
 };
 

@@ -34,6 +34,18 @@ ImVec4 colour(ImU32 c) {
   return ImGui::ColorConvertU32ToFloat4(c);
 }
 
+// "substep-discrete (8 px pieces)": the name, and the piece length where it has one.
+std::string moverLabel(const MoverSpec& m) {
+  if (m.kind != MoverKind::substep) return m.name();
+  char text[96];
+  if (m.maxStep == 0.0) {
+    std::snprintf(text, sizeof text, "%s (pieces of half the smallest item)", m.name().c_str());
+  } else {
+    std::snprintf(text, sizeof text, "%s (%g px pieces)", m.name().c_str(), m.maxStep);
+  }
+  return text;
+}
+
 }  // namespace
 
 // [SECTION] the frame ------------------------------------------------------------------------
@@ -236,7 +248,7 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
                    ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
     ImGui::Text("%s   frame %" PRIu64 "   recorded run  vs  %s%s", session_->name().c_str(),
-                session_->frame(), w.mover.name().c_str(),
+                session_->frame(), moverLabel(w.mover).c_str(),
                 w.updatesAsMoves ? " (updates treated as moves)" : "");
     ImGui::PushStyleColor(ImGuiCol_Text, pal::kRender);
     ImGui::TextWrapped("%s", kOpenLoop);
@@ -250,7 +262,7 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
   ui::RecordingSession* sessions[2] = {session_.get(), w.session.get()};
   ui::DebuggerState* views[2] = {&state_.view, &w.view};
   const std::string names[2] = {"recorded###RecordedPanel",
-                                "what-if: " + w.mover.name() + "###WhatIfPanel"};
+                                "what-if: " + moverLabel(w.mover) + "###WhatIfPanel"};
   std::optional<ItemId> picked;
   for (int k = 0; k < 2; ++k) {
     ImGui::SetNextWindowPos({origin.x + half * static_cast<float>(k), origin.y + titleH},
@@ -274,10 +286,14 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
           if (r) {
             const double d = std::hypot(m->final.x - r->final.x, m->final.y - r->final.y);
             ImGui::TextColored(colour(d > 0.0 ? pal::kRender : pal::kGood),
-                               d > 0.0 ? "%.3f from the recorded end" : "same end as recorded",
-                               d);
+                               d > 0.0 ? "%.3f from the recorded end" : "same end as recorded", d);
           }
         }
+      } else if (const auto id = sessions[k]->selected(); id && sessions[k]->world().has(*id)) {
+        // Moved by update (a game that moves bodies itself): nothing was swept to trace.
+        const Rect r = sessions[k]->world().rect(*id);
+        ImGui::Text("%s at (%.3f, %.3f), no move traced", sessions[k]->describe(*id).c_str(), r.x,
+                    r.y);
       } else {
         ImGui::TextColored(colour(pal::kDim), "select a call or an item to trace");
       }
@@ -341,8 +357,8 @@ void RecordingDebugger::drawWhatIfReport() {
   }
   const auto r = w.job.report();
   if (!r) return;
-  ImGui::Text("%" PRIu64 " moves re-run with %s; %zu ended elsewhere", r->moves,
-              w.mover.name().c_str(), r->differences.size());
+  ImGui::TextWrapped("%" PRIu64 " moves re-run with %s; %zu ended elsewhere", r->moves,
+                     moverLabel(w.mover).c_str(), r->differences.size());
   const auto goButton = [&](const char* id, std::uint64_t f, std::optional<std::uint32_t> call) {
     ImGui::SameLine();
     if (ImGui::SmallButton(id)) {
@@ -360,7 +376,7 @@ void RecordingDebugger::drawWhatIfReport() {
   }
   if (r->firstImplausibleFrame) {
     ImGui::TextColored(colour(kImplausible),
-                       "from frame %" PRIu64 " the game's goals stop making sense", 
+                       "from frame %" PRIu64 " the game's goals stop making sense",
                        *r->firstImplausibleFrame);
     goButton("go##implausible", *r->firstImplausibleFrame, std::nullopt);
     ImGui::TextColored(colour(pal::kDim),
@@ -369,6 +385,14 @@ void RecordingDebugger::drawWhatIfReport() {
   ImGui::TextColored(colour(r->tunnelled ? pal::kBad : pal::kGood),
                      "tunnelled: %" PRIu64 "   ended overlapping a solid: %" PRIu64, r->tunnelled,
                      r->overlapping);
+  ImGui::PushStyleColor(ImGuiCol_Text, r->recordedTunnelled ? pal::kBad : pal::kDim);
+  ImGui::TextWrapped("the recorded run: tunnelled %" PRIu64 ", ended overlapping %" PRIu64,
+                     r->recordedTunnelled, r->recordedOverlapping);
+  ImGui::PopStyleColor();
+  if (r->failedCalls > 0) {
+    ImGui::TextColored(colour(pal::kRender), "%" PRIu64 " calls refused by the re-run world",
+                       r->failedCalls);
+  }
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg |
                                 ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
   if (!ImGui::BeginTable("differences", 4, flags)) return;
@@ -395,7 +419,8 @@ void RecordingDebugger::drawWhatIfReport() {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(session_->describe(d.item).c_str());
       ImGui::TableNextColumn();
-      ImGui::Text("%.3f", d.distance);
+      // Enough digits that a rounding-sized difference does not read as 0.000.
+      ImGui::Text("%.4g", d.distance);
       ImGui::TableNextColumn();
       if (d.tunnelled) {
         ImGui::TextColored(colour(pal::kBad), "tunnelled");
@@ -411,15 +436,15 @@ void RecordingDebugger::drawWhatIfReport() {
 
 void RecordingDebugger::drawWhatIfControls() {
   ImGui::SetNextWindowSize({420, 0}, ImGuiCond_Always);
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          {0.5f, 0.5f});
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
   if (!ImGui::Begin("What-if: re-run the recording (W)", &showWhatIf_,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
-  ImGui::TextWrapped("Every recorded move is made again by another mover, beside the recorded "
-                     "run.");
+  ImGui::TextWrapped(
+      "Every recorded move is made again by another mover, beside the recorded "
+      "run.");
   ImGui::SetNextItemWidth(200.0f);
   if (ImGui::BeginCombo("mover", draftMover_.c_str())) {
     for (const std::string_view m : moverNames()) {
@@ -438,8 +463,9 @@ void RecordingDebugger::drawWhatIfControls() {
   ImGui::EndDisabled();
   ImGui::Checkbox("treat a body's updates as moves", &draftUpdates_);
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("for games that move bodies themselves (x += v*dt, update, push out):\n"
-                      "each update that only changes a position is re-run as a move");
+    ImGui::SetTooltip(
+        "for games that move bodies themselves (x += v*dt, update, push out):\n"
+        "each update that only changes a position is re-run as a move");
   }
   if (ImGui::Button("Run")) {
     try {
@@ -479,12 +505,12 @@ void RecordingDebugger::drawHelp() {
       {"F1, Ctrl+Q", "this window, quit"},
       {"wheel, right drag", "zoom about the cursor, pan"},
       {"left click", "trace the item under the cursor"},
-      {"timeline", "click or drag to scrub; red: divergence, orange: what-if differs, "
-                   "violet: goals stop making sense"},
+      {"timeline",
+       "click or drag to scrub; red: divergence, orange: what-if differs, "
+       "violet: goals stop making sense"},
   };
   ImGui::SetNextWindowSize({560, 0}, ImGuiCond_Always);
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          {0.5f, 0.5f});
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
   if (ImGui::Begin("Help: recordings", &showHelp_,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     if (ImGui::BeginTable("keys", 2)) {

@@ -23,10 +23,18 @@ std::uint64_t RecordingSession::lastFrame() const {
 }
 
 void RecordingSession::goTo(std::uint64_t f) {
-  frame_ = std::min(f, lastFrame());
+  f = std::min(f, lastFrame());
+  // Playing forward: the replay already stands at the end of the frame on screen, so the next
+  // frame is only its own calls, not a seek and the history again (a crowd's frames are big).
+  const bool next = primed_ && !call_ && f == frame_ + 1;
+  frame_ = f;
   call_.reset();
   calls_ = replay_.frames() > 0 ? replay_.calls(frame_) : std::vector<CallInfo>{};
-  rebuild();
+  if (!next) return rebuild();
+  divergence_.reset();
+  callTraced_ = false;
+  stepFrame(frame_, calls_, calls_.size());
+  trimHistory();
 }
 
 void RecordingSession::selectCall(std::optional<std::uint32_t> k) {
@@ -46,32 +54,52 @@ void RecordingSession::rebuild() {
   moves_.clear();
   callTraced_ = false;
   divergence_.reset();
+  primed_ = false;
   if (replay_.frames() == 0) return;
   const std::uint64_t from = frame_ > history_ ? frame_ - history_ : 0;
   for (std::uint64_t f = from; f <= frame_; ++f) {
     const std::vector<CallInfo> here = f == frame_ ? calls_ : replay_.calls(f);
-    const std::size_t end = f == frame_ && call_ ? *call_ + 1 : here.size();
-    // Stepping a frame's last call leaves the replay at the next frame's start (or at the end
-    // of the one it stepped): either is the same world, but only the first can be stepped on.
-    if (replay_.frame() != f || replay_.call() != 0) replay_.seek(f, 0);
-    for (std::size_t k = 0; k < end; ++k) {
-      const CallInfo& c = here[k];
-      const bool isCall = f == frame_ && call_ && k == *call_;
-      const bool traced =
-          tracesAMove(c.kind) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
-      MoveTrace t;
-      std::optional<Divergence> d = replay_.step(traced ? &t : nullptr);
-      if (d && !divergence_) divergence_ = std::move(d);
-      if (traced) {
-        moves_.push_back({f, std::move(t)});
-        callTraced_ = isCall;
-      }
+    stepFrame(f, here, f == frame_ && call_ ? *call_ + 1 : here.size());
+  }
+  trimHistory();
+  primed_ = !call_;
+}
+
+void RecordingSession::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
+                                 std::size_t end) {
+  // Stepping a frame's last call leaves the replay at the next frame's start (or at the end of
+  // the one it stepped): either is the same world, but only the first can be stepped on.
+  if (replay_.frame() != f || replay_.call() != 0) replay_.seek(f, 0);
+  for (std::size_t k = 0; k < end; ++k) {
+    const CallInfo& c = here[k];
+    const bool isCall = f == frame_ && call_ && k == *call_;
+    const bool traced =
+        traces(c) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
+    MoveTrace t;
+    std::optional<Divergence> d = replay_.step(traced ? &t : nullptr);
+    // Only the frame on screen's: an earlier frame's divergence is the timeline's to mark.
+    if (d && f == frame_ && !divergence_) divergence_ = std::move(d);
+    if (traced) {
+      moves_.push_back({f, std::move(t)});
+      callTraced_ = isCall;
     }
   }
-  // Older moves than the history keeps are dropped from the front.
+}
+
+void RecordingSession::trimHistory() {
+  // The history covers the last few frames, and at most so many moves, oldest dropped first.
   constexpr std::size_t kKeep = 16;
-  if (moves_.size() > kKeep)
-    moves_.erase(moves_.begin(), moves_.end() - static_cast<std::ptrdiff_t>(kKeep));
+  const std::uint64_t from = frame_ > history_ ? frame_ - history_ : 0;
+  std::size_t drop = 0;
+  while (drop < moves_.size() && moves_[drop].tick < from) ++drop;
+  if (moves_.size() - drop > kKeep) drop = moves_.size() - kKeep;
+  moves_.erase(moves_.begin(), moves_.begin() + static_cast<std::ptrdiff_t>(drop));
+}
+
+bool RecordingSession::traces(const CallInfo& c) const {
+  if (tracesAMove(c.kind)) return true;
+  const ReplayOptions& o = replay_.options();
+  return c.kind == CallKind::update && o.mover && o.updatesAsMoves;
 }
 
 const MoveTrace* RecordingSession::callTrace() const {

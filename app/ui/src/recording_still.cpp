@@ -70,8 +70,9 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
 
 void rejectSceneFlags(const PictureOptions& o) {
   const auto no = [](const std::string& flag) {
-    throw UsageError{flag + ": a recording has no scene, mover or tick (it shows frames: "
-                            "--frame N, --call K, --item LABEL)"};
+    throw UsageError{flag +
+                     ": a recording has no scene, mover or tick (it shows frames: "
+                     "--frame N, --call K, --item LABEL)"};
   };
   if (o.sceneGiven) no("--scene");
   if (o.moverGiven) no(o.compare ? "--compare" : "--mover");
@@ -112,11 +113,13 @@ RecordingStill::RecordingStill(const RecordingFlags& r, const PictureOptions& o)
     : r_(r), o_(o), session_(openRecording(r.path)) {
   rejectSceneFlags(o);
   if (r.whatIf || r.updatesAsMoves) {
-    throw UsageError{std::string(r.whatIf ? "--what-if" : "--updates-as-moves") +
-                     ": a what-if run is shown by tv-debugger (tv-replay --mover prints its report)"};
+    throw UsageError{
+        std::string(r.whatIf ? "--what-if" : "--updates-as-moves") +
+        ": a what-if run is shown by tv-debugger (tv-replay --mover prints its report)"};
   }
   (void)overlaysFor(o);  // a bad --hide/--show fails before anything is drawn
-  if (session_.frames() == 0) throw UsageError{"--open " + r.path + ": the recording has no frames"};
+  if (session_.frames() == 0)
+    throw UsageError{"--open " + r.path + ": the recording has no frames"};
   if (r.frame > session_.lastFrame()) {
     throw UsageError{"--frame " + std::to_string(r.frame) + ": the recording has frames 0.." +
                      std::to_string(session_.lastFrame())};
@@ -129,9 +132,8 @@ RecordingStill::RecordingStill(const RecordingFlags& r, const PictureOptions& o)
   }
   if (r.call) {
     if (*r.call >= session_.calls().size()) {
-      throw UsageError{"--call " + std::to_string(*r.call) + ": frame " +
-                       std::to_string(r.frame) + " has " +
-                       std::to_string(session_.calls().size()) + " calls"};
+      throw UsageError{"--call " + std::to_string(*r.call) + ": frame " + std::to_string(r.frame) +
+                       " has " + std::to_string(session_.calls().size()) + " calls"};
     }
     session_.selectCall(r.call);
   }

@@ -110,8 +110,9 @@ void recordingCallsContents(const RecordingSession& s, RecordingViewState& st,
   if (ImGui::Selectable("   end of frame (every call made)", frameEnd)) a.call = std::nullopt;
   ImGuiListClipper clipper;
   clipper.Begin(static_cast<int>(calls.size()));
-  if (st.revealCall && s.call()) clipper.ForceDisplayRangeByIndices(static_cast<int>(*s.call()),
-                                                                      static_cast<int>(*s.call()) + 1);
+  if (st.revealCall && s.call())
+    clipper.ForceDisplayRangeByIndices(static_cast<int>(*s.call()),
+                                       static_cast<int>(*s.call()) + 1);
   while (clipper.Step()) {
     for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
       const CallInfo& c = calls[static_cast<std::size_t>(i)];
@@ -123,7 +124,8 @@ void recordingCallsContents(const RecordingSession& s, RecordingViewState& st,
       ImU32 tint = mine ? pal::kLabel : pal::kDim;
       if (tracesAMove(c.kind) && c.hits > 0) tint = mine ? pal::kHit : IM_COL32(200, 120, 120, 255);
       ImGui::PushStyleColor(ImGuiCol_Text, tint);
-      if (ImGui::Selectable(label, on)) a.call = on ? std::nullopt : std::optional<std::uint32_t>(i);
+      if (ImGui::Selectable(label, on))
+        a.call = on ? std::nullopt : std::optional<std::uint32_t>(i);
       ImGui::PopStyleColor();
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.summary.c_str());
       if (on && st.revealCall) {
@@ -298,9 +300,12 @@ void recordingInspectorContents(const RecordingSession& s) {
                            c.position.x, c.position.y, m->final.x, m->final.y);
       }
       traceDetails(s, *m);
-    } else if (!tracesAMove(c.kind)) {
-      ImGui::TextColored(colour(pal::kDim), "%u results recorded (a query has no move to trace)",
-                         c.hits);
+    } else if (c.kind == CallKind::queryRect || c.kind == CallKind::queryPoint ||
+               c.kind == CallKind::querySegment || c.kind == CallKind::anyOverlap) {
+      ImGui::TextColored(colour(pal::kDim), "%u results recorded (a query sweeps nothing)", c.hits);
+    } else if (!s.traces(c)) {
+      ImGui::TextColored(colour(pal::kDim), "nothing is swept by %s, so there is no trace",
+                         std::string(callKindName(c.kind)).c_str());
     }
     return;
   }
@@ -359,8 +364,8 @@ void recordingHudContents(const RecordingSession& s, const DebuggerState& st) {
   ImGui::TextColored(colour(st.paused ? pal::kRender : pal::kGood),
                      st.paused ? "paused" : "playing");
   ImGui::TextColored(colour(pal::kDim), "traced: %s   %zu items   zoom %.2f px/unit",
-                     s.selected() ? s.describe(*s.selected()).c_str() : "none",
-                     s.world().count(), st.camera.scale());
+                     s.selected() ? s.describe(*s.selected()).c_str() : "none", s.world().count(),
+                     st.camera.scale());
   // A file cut short or with a bad chunk opens up to its last good frame: say so.
   for (const std::string& w : s.replay().warnings()) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 560.0f);

@@ -58,6 +58,9 @@ class RecordingSession {
   [[nodiscard]] std::optional<ItemId> findLabel(std::string_view label) const;
   /// The item under world point `p`: a moving item before a still one, the smallest first.
   [[nodiscard]] std::optional<ItemId> itemAt(Vec2 p) const;
+  /// True for the calls whose re-run leaves a MoveTrace: moves, checks, projects, a Mover's
+  /// moves, and in a what-if run with updatesAsMoves the updates it makes moves.
+  [[nodiscard]] bool traces(const CallInfo& c) const;
   /// True for items that move somewhere in the recording (drawn as bodies); the rest are solids.
   [[nodiscard]] bool moves(ItemId id) const;
 
@@ -68,8 +71,8 @@ class RecordingSession {
   [[nodiscard]] std::span<const TracedMove> history() const { return moves_; }
   /// The selected call's trace (a move, check or project), if one is selected.
   [[nodiscard]] const MoveTrace* callTrace() const;
-  /// The first divergence met while replaying for the view (the call's recorded result differs
-  /// from what core returned), if any.
+  /// The first divergence in the frame on screen (a call's recorded result differs from what
+  /// core returned), if any.
   [[nodiscard]] const std::optional<Divergence>& divergence() const { return divergence_; }
   /// What the world view draws now (valid until the next call that changes the session).
   [[nodiscard]] WorldPicture picture();
@@ -85,6 +88,8 @@ class RecordingSession {
 
  private:
   void rebuild();
+  void stepFrame(std::uint64_t f, const std::vector<CallInfo>& calls, std::size_t end);
+  void trimHistory();
 
   Replay replay_;
   std::string name_;
@@ -94,6 +99,7 @@ class RecordingSession {
   std::optional<ItemId> selected_;
   std::vector<TracedMove> moves_;
   bool callTraced_ = false;
+  bool primed_ = false;  // the replay stands at the end of frame_, nothing selected in it
   std::optional<Divergence> divergence_;
   std::unordered_map<ItemId, std::size_t> recorded_;  // item -> index in replay.items()
   // The picture's storage.

@@ -17,18 +17,18 @@ namespace tv::ui {
 
 /// The flags that pick a recording's picture.
 struct RecordingFlags {
-  std::string path;                    ///< --open FILE (or, for tv-debugger, FILE.tvrec)
-  std::uint64_t frame = 0;             ///< --frame N
-  std::optional<std::string> item;     ///< --item LABEL: the item traced
-  std::optional<std::uint32_t> call;   ///< --call K: the call of the frame selected
-  std::optional<std::string> whatIf;   ///< --what-if MOVER: re-run beside it (tv-debugger)
-  bool updatesAsMoves = false;         ///< --updates-as-moves: for the what-if run
+  std::string path;                   ///< --open FILE (or, for tv-debugger, FILE.tvrec)
+  std::uint64_t frame = 0;            ///< --frame N
+  std::optional<std::string> item;    ///< --item LABEL: the item traced
+  std::optional<std::uint32_t> call;  ///< --call K: the call of the frame selected
+  std::optional<std::string> whatIf;  ///< --what-if MOVER: re-run beside it (tv-debugger)
+  bool updatesAsMoves = false;        ///< --updates-as-moves: for the what-if run
 };
 
-/// Takes --open, --frame, --item, --call, --what-if and --updates-as-moves (and, with `positional`, a lone argument ending in
-/// .tvrec) out of argv; the other arguments go to `rest`, argv[0] first. Returns the flags when
-/// a recording was named; UsageError for a flag without its value, or --frame/--item/--call
-/// without a recording.
+/// Takes --open, --frame, --item, --call, --what-if and --updates-as-moves (and, with `positional`,
+/// a lone argument ending in .tvrec) out of argv; the other arguments go to `rest`, argv[0] first.
+/// Returns the flags when a recording was named; UsageError for a flag without its value, or
+/// --frame/--item/--call without a recording.
 [[nodiscard]] std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv,
                                                                   bool positional,
                                                                   std::vector<char*>& rest);

@@ -16,8 +16,8 @@ namespace tv::ui {
 
 /// What the person is looking at in a recording.
 struct RecordingViewState {
-  DebuggerState view;      ///< overlays, camera, framing, paused (as for a scene)
-  std::string itemFilter;  ///< the outliner's search
+  DebuggerState view;       ///< overlays, camera, framing, paused (as for a scene)
+  std::string itemFilter;   ///< the outliner's search
   bool movingOnly = false;  ///< the outliner lists only items that move
   /// Bring a tab of the panel under the calls forward once: 0 inspector, 1 items.
   std::optional<int> showTab;
