@@ -34,7 +34,8 @@ const char* const kUsage =
     "                   placed below auto-sized ones settle on the third)\n"
     "  --timing         print how long a frame takes (stderr; never in the image)\n"
     "  --PARAM VALUE    any parameter of the scene (--list shows each scene's with its default):\n"
-    "                   --speed --body-size --tile --dt --substep --offset ... (--size is the image)\n"
+    "                   --speed --body-size --tile --dt --substep --offset ... (--size is the "
+    "image)\n"
     "  --list           scenes and movers with their one-line descriptions\n"
     "Exit status: 0 done, 1 rendering failed, 2 bad command line.\n";
 

@@ -160,7 +160,8 @@ float Debugger::drawMenuBar() {
   };
   if (ImGui::BeginMenu("File")) {
     item("Open scene...", Command::openScene);
-    if (ImGui::MenuItem("Open file...")) openPicker_ = focusPath_ = true;  // the picker's path field
+    if (ImGui::MenuItem("Open file..."))
+      openPicker_ = focusPath_ = true;  // the picker's path field
     item("Restart", Command::restart);
     ImGui::Separator();
     item("Quit", Command::quit);
