@@ -2,7 +2,8 @@
 # The main job. Builds Release, then:
 # - with a display: opens the debugger (extra arguments go to tv-debugger);
 # - without one (or with --headless): renders the before/after comparison images into
-#   out/comparisons/ and prints the tunnelling table, measured.
+#   out/comparisons/, records the sample game and validates its recording, and prints the
+#   tunnelling table, measured.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh all
@@ -41,6 +42,16 @@ LIST
 echo "Comparison images (before/after, side by side), in $out/:"
 cat "$out/index.txt"
 echo
+
+# A game that records itself, its recording summarised and validated (tv-replay).
+if cmake --build --preset release --target tv-example-platformer tv-replay >&2; then
+  mkdir -p out/recordings
+  echo "The sample platformer, recorded (out/recordings/platformer.tvrec):"
+  "$build/app/examples/tv-example-platformer" --frames 600 --record out/recordings/platformer.tvrec
+  "$build/app/replay/tv-replay" out/recordings/platformer.tvrec
+  "$build/app/replay/tv-replay" out/recordings/platformer.tvrec --validate
+  echo
+fi
 
 if [ $bench = 1 ]; then
   exec "$build/app/bench/tv-bench" tunnel --out out/bench

@@ -28,6 +28,12 @@ std::span<const Study> studies() {
         {"ticks", "ticks timed per crowd run (default by size)"},
         {"crowd-only", "only the crowd table (used to compare tracing builds)", false}},
        runScale},
+      {"record",
+       "recording on vs detached on the crowd, bytes per move, replay and seek times",
+       {{"count", "crowd size (default 10000)"},
+        {"ticks", "crowd ticks per timed run"},
+        {"variant", "only the crowd, detached, memory or validate (for callgrind)"}},
+       runRecord},
   };
   return all;
 }

@@ -26,5 +26,6 @@ int runPareto(const Options& o);
 int runJitter(const Options& o);
 int runStress(const Options& o);
 int runScale(const Options& o);
+int runRecord(const Options& o);
 
 }  // namespace tv::bench

@@ -161,7 +161,8 @@ TEST(BadFile, ABadChunkChecksumNamesTheChunkAndFrame) {
   const std::vector<std::size_t> chunks = tvtest::chunks(f);
   ASSERT_GT(chunks.size(), 3u);
   f[chunks[2] + 12] ^= 0x40;
-  EXPECT_ERROR(f, ("byte " + std::to_string(chunks[2])).c_str(), "frame 2", "checksum mismatch");
+  const std::string at = "byte " + std::to_string(chunks[2]);
+  EXPECT_ERROR(f, at.c_str(), "frame 2", "checksum mismatch");
   // Tolerant (the debugger): opens what is whole, says why it stopped.
   tv::ReplayOptions o;
   o.tolerant = true;

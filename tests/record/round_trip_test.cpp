@@ -148,6 +148,26 @@ TEST(RoundTrip, AGoalEditedOnDiskDivergesAtExactlyThatCallAndTheReportNamesIt) {
   EXPECT_NE(report.find("frame 6, call 0 (move player"), std::string::npos) << report;
 }
 
+TEST(RoundTrip, LabelsGivenBeforeAttachAreKeptAndASecondAttachIsRefused) {
+  World world(16);
+  const ItemId a = world.add({0, 0, 8, 8});
+  tv::Recorder rec;
+  rec.label(a, "crate", "crate");  // before attach: written with frame 0
+  world.attach(rec);
+  world.move(a, {4, 0});
+  world.detach();
+  EXPECT_TRUE(rec.ok());
+  world.attach(rec);  // the recording is closed: nothing more goes in, and it says so
+  world.move(a, {8, 0});
+  world.detach();
+  EXPECT_FALSE(rec.ok());
+  EXPECT_NE(rec.error().find("make a new Recorder"), std::string::npos) << rec.error();
+  tv::Replay replay = tv::Replay::fromBytes(rec.bytes());
+  EXPECT_EQ(replay.label(a), "crate");
+  EXPECT_EQ(replay.summary().moves, 1u);
+  EXPECT_FALSE(replay.validate());
+}
+
 TEST(RoundTrip, StepGoesCallByCallAndFillsTheTrace) {
   Script s;
   tv::Replay replay = tv::Replay::fromBytes(s.record());

@@ -61,7 +61,17 @@ enum : std::uint8_t { kP0 = 0, kP1 = 1, kF32 = 2, kF64 = 3 };
 class Group {
  public:
   explicit Group(Out& o) : o_(o), at_(o.b.size()) { o.b.push_back(0); }
+  // Most values are their first prediction: code 0, nothing to write.
   void put(double v, double p0, double p1, double base = 0.0) {
+    if (sameBits(v, p0)) {
+      ++n_;
+      return;
+    }
+    putOther(v, p0, p1, base);
+  }
+
+ private:
+  [[gnu::noinline]] void putOther(double v, double p0, double p1, double base) {
     std::uint8_t code = kF64;
     if (sameBits(v, p0)) {
       code = kP0;
@@ -83,7 +93,6 @@ class Group {
     ++n_;
   }
 
- private:
   Out& o_;
   std::size_t at_;
   int n_ = 0;

@@ -44,7 +44,8 @@ std::uint8_t answerCode(ResponseId r) {
 
 std::uint64_t cellCount(double cellSize, const Rect& r) {
   const Grid g(cellSize);
-  if (!isFinite(r) || !g.fits(r)) return 0;  // refused by the world itself
+  // Refused by the world itself (and Grid::fits assumes w, h > 0).
+  if (!isFinite(r) || !(r.w > 0 && r.h > 0) || !g.fits(r)) return 0;
   const CellRange c = g.cellsOf(r);
   const double n = (static_cast<double>(c.x1 - c.x0) + 1) * (static_cast<double>(c.y1 - c.y0) + 1);
   return n >= 1e18 ? std::uint64_t{1} << 60 : static_cast<std::uint64_t>(n);
@@ -1039,6 +1040,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       c.rect.y = g.get(p.y, 0);
       c.rect.w = g.get(p.w, 0);
       c.rect.h = g.get(p.h, c.rect.w);
+      // The world cannot hold what a negative size means (and would not be asked it).
+      if (c.rect.w < 0 || c.rect.h < 0) in.failAt(c.offset, "a query rect with a negative size");
       requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells, callKindName(c.kind));
       if (any) {
         c.any = kb & kAny;

@@ -43,6 +43,8 @@ struct Recorder::Impl {
     MoverSpec spec;
   };
   std::unordered_map<const Mover*, MoverEntry> movers;
+  const Mover* lastMover = nullptr;  // most games move everything with one mover: skip the map
+  MoverEntry lastEntry{};
   std::vector<MoverSpec> specs;  // by id
   std::vector<bool> defined;     // since the last keyframe
   struct PendingLabel {
@@ -97,15 +99,11 @@ void Recorder::writeBytes(const std::uint8_t* data, std::size_t n) {
 
 void Recorder::attached(const World& world) {
   Impl& d = *impl_;
-  if (d.started) {
-    // One recording, one world: a second attach would need a second header.
-    if (d.world != &world) {
-      if (error_.empty()) error_ = "tv::Recorder: attached to a second world; it records only the first";
-      d.stopped = true;
-    }
+  if (d.started || d.stopped) {
+    // One recording, one attachment: another would need another header.
+    if (error_.empty()) error_ = "tv::Recorder: attached again after it was closed; make a new Recorder";
     return;
   }
-  if (d.stopped) return;
   d.world = const_cast<World*>(&world);  // attach() took the world non-const
   d.started = true;
   rec::Out h;
@@ -157,7 +155,9 @@ void Recorder::frame() {
   size_ += 8 + payload.size();
   ++frames_;
   ++d.frame;
+  const std::size_t last = payload.size();
   payload.clear();
+  payload.reserve(last + last / 4 + 256);  // the next frame is likely as big: grow once
   d.enc.out.varint(d.frame);
   const bool key = d.frame % d.options.keyframeEvery == 0;
   d.enc.out.u8(key ? 1 : 0);
@@ -298,8 +298,10 @@ void Recorder::moverMoved(const Mover& mover, ItemId id, const Rect& start, Vec2
   ++moves_;
   const MoverSpec& spec = mover.spec();
   std::uint32_t mid;
-  auto it = d.movers.find(&mover);
-  if (it != d.movers.end() && sameSpec(it->second.spec, spec)) {
+  auto it = d.lastMover == &mover ? d.movers.end() : d.movers.find(&mover);
+  if (d.lastMover == &mover && sameSpec(d.lastEntry.spec, spec)) {
+    mid = d.lastEntry.id;
+  } else if (it != d.movers.end() && sameSpec(it->second.spec, spec)) {
     mid = it->second.id;
   } else if (d.specs.size() < rec::kMaxMovers) {
     mid = static_cast<std::uint32_t>(d.specs.size());
@@ -315,6 +317,8 @@ void Recorder::moverMoved(const Mover& mover, ItemId id, const Rect& start, Vec2
       return;
     }
   }
+  d.lastMover = &mover;
+  d.lastEntry = {mid, spec};
   const bool define = !d.defined[mid];
   d.defined[mid] = true;
   if (!(d.enc.model.slots[id.index].rect == start)) {

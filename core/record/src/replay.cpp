@@ -18,18 +18,6 @@
 
 namespace tv {
 
-namespace rec {
-
-thread_local LegCursor tLegs;
-
-Leg replayedResponse(const Collision& c, Vec2 goal) {
-  LegCursor& cur = tLegs;
-  if (!cur.whatIf && cur.legs && cur.next < cur.legs->size()) return (*cur.legs)[cur.next++];
-  if (!cur.whatIf) cur.overrun = true;
-  return slideResponse(c, goal);
-}
-
-}  // namespace rec
 
 std::string_view callKindName(CallKind k) {
   switch (k) {
@@ -83,7 +71,8 @@ void Replay::Impl::index() {
     fileFail(0, 0, "the file is " + std::to_string(size) + " bytes, shorter than the 32-byte header");
   }
   if (std::memcmp(bytes.data(), rec::kMagic, 8) != 0) fileFail(0, 0, "not a .tvrec file (wrong magic)");
-  const unsigned major = bytes[8] | (bytes[9] << 8), minor = bytes[10] | (bytes[11] << 8);
+  const unsigned major = unsigned{bytes[8]} | (unsigned{bytes[9]} << 8u);
+  const unsigned minor = unsigned{bytes[10]} | (unsigned{bytes[11]} << 8u);
   if (major != rec::kVersionMajor) {
     fileFail(8, 0, "format version " + std::to_string(major) + "." + std::to_string(minor) +
                        " is not readable by this reader (version " +
@@ -169,6 +158,10 @@ void Replay::Impl::index() {
       while (!src.done()) {
         rec::decodeCall(src, m, c, options.maxCells);
         ++info.calls;
+        // A pixel mover keeps sub-pixel remainders that no keyframe holds: seek from frame 0.
+        if (c.kind == CallKind::moverMove && m.movers[c.mover].kind == MoverKind::pixel) {
+          statefulMovers = true;
+        }
         tally(c, f, answerCounts);
       }
     } catch (const Error& e) {
@@ -300,26 +293,6 @@ Replay Replay::fromBytes(std::vector<std::uint8_t> bytes, ReplayOptions options)
   impl->options = options;
   if (options.mover) impl->whatIfMover = std::make_unique<Mover>(*options.mover);
   impl->index();
-  // Which movers keep state a keyframe cannot hold: scan the mover definitions once.
-  impl->statefulMovers = false;
-  {
-    rec::Model m;
-    m.cellSize = impl->cellSize;
-    WorldState ws;
-    rec::Call c;
-    for (std::uint64_t f = 0; f < impl->frames.size() && !impl->statefulMovers; ++f) {
-      const FrameInfo& fi = impl->frames[f];
-      rec::In in(impl->bytes.data() + fi.offset, fi.size, fi.offset, f);
-      impl->beginFrame(in, m, ws, f);
-      while (!in.done()) {
-        rec::decodeCall(in, m, c, impl->options.maxCells);
-        if (c.kind == CallKind::moverMove && m.movers[c.mover].kind == MoverKind::pixel) {
-          impl->statefulMovers = true;
-          break;
-        }
-      }
-    }
-  }
   Replay r(std::move(impl));
   r.seek(0, 0);
   return r;

@@ -26,9 +26,6 @@ struct LegCursor {
   bool overrun = false;
   bool whatIf = false;  // what-if: recorded legs belong to other collisions; slide instead
 };
-extern thread_local LegCursor tLegs;
-// Registered under every recorded user response's name.
-Leg replayedResponse(const Collision& c, Vec2 goal);
 
 }  // namespace rec
 

@@ -8,6 +8,22 @@
 
 namespace tv {
 
+namespace rec {
+namespace {
+
+thread_local LegCursor tLegs;
+
+// Registered under every recorded user response's name: hands back the recorded legs in order.
+Leg replayedResponse(const Collision& c, Vec2 goal) {
+  LegCursor& cur = tLegs;
+  if (!cur.whatIf && cur.legs && cur.next < cur.legs->size()) return (*cur.legs)[cur.next++];
+  if (!cur.whatIf) cur.overrun = true;
+  return slideResponse(c, goal);
+}
+
+}  // namespace
+}  // namespace rec
+
 namespace {
 
 std::string fmt(double v) { return formatNumber(v); }

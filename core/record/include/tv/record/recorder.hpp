@@ -10,6 +10,9 @@
 ///   ... play ...
 ///   world.detach();                         // or let rec go out of scope: the file is closed
 ///
+/// A recorder records one attachment: after detach (or close) it records nothing more. Detach it
+/// (or close it) before the world or the FixedStep it watches is destroyed.
+///
 /// A frame's calls are written and flushed when the frame ends, so the file of a game that
 /// crashed replays up to its last whole frame. An I/O error mid-game (disk full) stops the
 /// recording — `ok()` turns false and `error()` says why — and the game goes on.
