@@ -154,6 +154,23 @@ TEST(MalformedScene, RulesAndParametersMustMatchABuiltinScene) {
       {"s.json", "params", "missing"});
 }
 
+TEST(MalformedScene, ABuiltinScenesRulesGetTheBodiesTheyWereBuiltFor) {
+  // bullets-enemies pairs body k with body k + 1 and corner-graze aims shot k at tiles[group]:
+  // a body more or less, or another group, would send those rules out of bounds.
+  const sim::SceneDef& pairs = sim::findScene("bullets-enemies");
+  Level lv = exportScene(pairs, pairs.defaults());
+  lv.bodies.pop_back();
+  const std::string fewer = writeSceneFile(lv);
+  expectError([&] { return makeScene(parseSceneFile(fewer, "s.json")); },
+              {"s.json", "bodies", "expect 200 bodies", "has 199"});
+  const sim::SceneDef& graze = sim::findScene("corner-graze");
+  Level regrouped = exportScene(graze, graze.defaults());
+  regrouped.bodies[3].body.group = 99999;
+  const std::string text = writeSceneFile(regrouped);
+  expectError([&] { return makeScene(parseSceneFile(text, "s.json")); },
+              {"s.json", "bodies[3].group", "99999"});
+}
+
 // [SECTION] mutation loop -------------------------------------------------------------------------
 
 /// Random corruptions of `text`: flipped bytes, deleted and duplicated spans, digits changed to
@@ -217,7 +234,7 @@ TEST(Mutation, CorruptedMapsAndSceneFilesLoadOrFailCleanly) {
     });
     rounds += 600;
   }
-  for (const char* name : {"platformer", "bullets-enemies"}) {
+  for (const char* name : {"platformer", "bullets-enemies", "corner-graze", "bounce-gap"}) {
     const sim::SceneDef& s = sim::findScene(name);
     const std::string text = writeSceneFile(exportScene(s, s.defaults(), "continuous"));
     errors += mutate(text, 11, 300, [](const std::string& t) {

@@ -108,6 +108,26 @@ std::vector<sim::ParamSpec> levelParams(const Level& level, const sim::SceneDef*
   return out;
 }
 
+/// A built-in scene's rules index their bodies by position and by `group` (a bullet's partner is
+/// the next body, a shot's target tile is tiles[group]), so a file whose bodies differ from what
+/// the rules were built for in number or in groups is refused, not run out of bounds.
+void checkAgainstRules(const Level& level, const sim::SceneDef& builtin,
+                       const sim::SceneSetup& built) {
+  if (level.bodies.size() != built.bodies.size()) {
+    fail(level.source, "bodies: the rules of " + builtin.name + " expect " +
+                           std::to_string(built.bodies.size()) +
+                           " bodies (from its parameters), but the file has " +
+                           std::to_string(level.bodies.size()));
+  }
+  for (std::size_t i = 0; i < built.bodies.size(); ++i) {
+    if (level.bodies[i].body.group != built.bodies[i].group) {
+      fail(level.source, "bodies[" + std::to_string(i) + "].group: the rules of " + builtin.name +
+                             " expect " + std::to_string(built.bodies[i].group) + ", but got " +
+                             std::to_string(level.bodies[i].body.group));
+    }
+  }
+}
+
 }  // namespace
 
 Rect bounds(const Level& level) {
@@ -145,6 +165,7 @@ sim::SceneDef makeScene(Level level) {
   def.name = level.name;
   def.description = level.description;
   def.params = levelParams(level, builtin);
+  if (builtin) checkAgainstRules(level, *builtin, builtin->build(def.defaults()));
   const double fileOffset = builtin ? paramOr(level, sim::param::offset, 0.0) : 0.0;
   const Rect frame = level.camera.value_or(bounds(level));
   def.camera = [frame, fileOffset](const sim::Params& p) {
@@ -159,6 +180,7 @@ sim::SceneDef makeScene(Level level) {
     sim::SceneSetup s;
     if (builtin) {
       s = builtin->build(p);  // its rules, rebuilt from the same parameters
+      checkAgainstRules(lv, *builtin, s);
     } else {
       s.cellSize = p.get(sim::param::cell);
       std::vector<detail::BodyRule> rules;
