@@ -97,13 +97,15 @@ int runLevelTunnel(const Options& o) {
   const sim::Params params = scene.defaults();
   const sim::SceneSetup setup = scene.build(params);
   if (setup.solids.empty()) {
-    throw UsageError{source.describe() + ": nothing in it is solid, so there is nothing to shoot at"};
+    throw UsageError{source.describe() +
+                     ": nothing in it is solid, so there is nothing to shoot at"};
   }
   World world(setup.cellSize);
   for (const sim::Solid& s : setup.solids) (void)world.add(s.rect);
   const double dt = params.get(sim::param::dt);
 
-  const std::vector<double> speeds = o.numbers("speeds", {240, 480, 720, 960, 1920, 3840, 7680, 1e5});
+  const std::vector<double> speeds =
+      o.numbers("speeds", {240, 480, 720, 960, 1920, 3840, 7680, 1e5});
   const auto count =
       static_cast<std::int64_t>(o.has("count") ? parseCount("count", o.extra.at("count"))
                                                : o.pick<std::uint64_t>(100, 1000, 5000));
@@ -113,8 +115,8 @@ int runLevelTunnel(const Options& o) {
   for (const double v : speeds) {
     if (!(v > 0 && v <= 1e9)) throw UsageError{"--speeds: " + sig3(v) + " is not in (0, 1e9]"};
   }
-  const std::vector<std::string> movers = {"discrete", "substep-discrete", "substep-sweep", "sweep",
-                                           "continuous", "pixel", "adaptive"};
+  const std::vector<std::string> movers = {
+      "discrete", "substep-discrete", "substep-sweep", "sweep", "continuous", "pixel", "adaptive"};
   std::ostream& os = std::cout;
   printHeading(os, "tunnel: tunnelling rates on " + scene.name, modeName(o.mode), o.seed, o.out);
   os << "Shots at the " << setup.solids.size() << " solids of " << source.describe() << ": "

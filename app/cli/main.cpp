@@ -70,7 +70,7 @@ struct Options {
   std::optional<std::uint64_t> ticks;
   std::optional<std::size_t> trace;
   std::vector<std::pair<std::string, std::string>> params;  // flag name (without --), value
-  tv::app::SceneSource file;                                 // --map, --scene-file
+  tv::app::SceneSource file;                                // --map, --scene-file
   std::optional<std::pair<std::string, std::string>> exportScene;  // NAME, FILE
 };
 
@@ -333,13 +333,14 @@ int run(const Options& o) {
         throw UsageError{"--mover " + *o.mover + ": " + e.what()};
       }
     }
-    const std::string text = tv::level::writeSceneFile(tv::level::exportScene(*scene, params, o.mover));
+    const std::string text =
+        tv::level::writeSceneFile(tv::level::exportScene(*scene, params, o.mover));
     std::ofstream out(o.exportScene->second, std::ios::binary);
     if (!(out << text) || !out.flush()) {
       throw UsageError{"--export-scene: cannot write '" + o.exportScene->second + "'"};
     }
-    std::cout << "wrote " << o.exportScene->second << " (" << scene->name << ", "
-              << text.size() << " bytes)\n";
+    std::cout << "wrote " << o.exportScene->second << " (" << scene->name << ", " << text.size()
+              << " bytes)\n";
     return 0;
   }
   std::vector<std::string_view> movers;

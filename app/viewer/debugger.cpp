@@ -79,7 +79,8 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   if (o.file.given()) {
     files_.push_back(o.file);
     if (const auto m = o.file.mover(); m && !o.moverGiven) moverNames = {*m};
-    for (const std::string& note : o.file.notes()) std::fprintf(stderr, "tv-debugger: note: %s\n", note.c_str());
+    for (const std::string& note : o.file.notes())
+      std::fprintf(stderr, "tv-debugger: note: %s\n", note.c_str());
   }
   const sim::SceneDef& scene = ui::sceneFor(o);
   sim::Params params = ui::paramsFor(scene, o);

@@ -8,7 +8,8 @@
 namespace tv::viewer {
 
 const char* const kUsage =
-    "usage: tv-debugger [--scene NAME] [--mover NAME | --compare A,B[,C...]] [--tick N]\n"
+    "usage: tv-debugger [--scene NAME | --map FILE.tmj | --scene-file FILE.json]\n"
+    "                   [--mover NAME | --compare A,B[,C...]] [--tick N]\n"
     "                   [--window WxH] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
     "                   [--render-hz R] [--hide a,b] [--show a,b] [--PARAM VALUE ...]\n"
     "                   [--overlay] [--sweep] [--ui-scale S] [--no-settings]\n"
@@ -22,7 +23,9 @@ const char* const kUsage =
     "in the window for every shortcut.\n"
     "  The picture's flags are tv-render's (see tv-render --help): the scene, the mover or the\n"
     "  movers to compare, the tick to open at, the window size, the traced body, the view, the\n"
-    "  render rate, the overlays and any scene parameter.\n"
+    "  render rate, the overlays and any scene parameter. A level from a file: --map FILE (a\n"
+    "  Tiled map; --solid-layer NAME makes a layer solid) or --scene-file FILE; in the window,\n"
+    "  File > Open file... or drop the file on it.\n"
     "  --overlay        compared movers in one view (default: side by side)\n"
     "  --sweep          open the substep sweep plot\n"
     "  --ui-scale S     text and widget scale, 0.5..4 (default: the monitor's content scale)\n"

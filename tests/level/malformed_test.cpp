@@ -40,10 +40,11 @@ const std::vector<std::uint32_t> kRow = {1, 1, 1, 1};
 TEST(MalformedMap, ABadGidNamesTheLayerTheIndexAndTheValue) {
   std::string data = tileData(kRow, "csv");
   data.replace(data.find("1,1,1"), 5, "1,-5,1");
-  expectMapError(map(4, 1, tileLayer("a", 4, 1, tileData(kRow, "csv")) + "," +
-                               tileLayer("b", 4, 1, tileData(kRow, "csv")) + "," +
-                               tileLayer("c", 4, 1, data)),
-                 {"level.tmj", "layers[2].data[1]", "-5"});
+  expectMapError(
+      map(4, 1,
+          tileLayer("a", 4, 1, tileData(kRow, "csv")) + "," +
+              tileLayer("b", 4, 1, tileData(kRow, "csv")) + "," + tileLayer("c", 4, 1, data)),
+      {"level.tmj", "layers[2].data[1]", "-5"});
 }
 
 TEST(MalformedMap, AGidOutsideEveryTilesetIsNamed) {
@@ -64,13 +65,15 @@ TEST(MalformedMap, UnsupportedFeaturesAreNamedAsUnsupported) {
   std::string lzma = zstd;
   lzma.replace(lzma.find("zstd"), 4, "lzma");
   expectMapError(lzma, {"unsupported compression", "lzma"});
-  expectMapError(map(4, 1, R"({"type": "objectgroup", "name": "o", "objects": [
+  expectMapError(map(4, 1,
+                     R"({"type": "objectgroup", "name": "o", "objects": [
                    {"id": 1, "x": 0, "y": 0, "width": 8, "height": 8, "ellipse": true, )" +
-                               collidable() + "}]}"),
+                         collidable() + "}]}"),
                  {"layers[0].objects[0]", "unsupported", "ellipse"});
-  expectMapError(map(4, 1, R"({"type": "objectgroup", "name": "o", "objects": [
+  expectMapError(map(4, 1,
+                     R"({"type": "objectgroup", "name": "o", "objects": [
                    {"id": 1, "x": 0, "y": 0, "width": 8, "height": 8, "rotation": 30, )" +
-                               collidable() + "}]}"),
+                         collidable() + "}]}"),
                  {"layers[0].objects[0].rotation", "rotated", "30"});
   expectMapError(map(4, 1, "", R"({"firstgid": 1, "source": "tiles.tsx"})"),
                  {"tilesets[0].source", "unsupported", "tiles.tsx"});
@@ -94,8 +97,8 @@ TEST(MalformedMap, DataThatDoesNotMatchTheLayerSizeIsRefused) {
 TEST(MalformedMap, HugeDeclaredSizesAreRefusedBeforeAnythingIsAllocated) {
   // 2^24 × 2^24 tiles declared with a few bytes of zlib data: refused by arithmetic, not by
   // running out of memory (under ASan an attempt to allocate 2^50 bytes would abort).
-  const std::string big = map(16777216, 16777216,
-                              tileLayer("a", 16777216, 16777216, tileData(kRow, "zlib")));
+  const std::string big =
+      map(16777216, 16777216, tileLayer("a", 16777216, 16777216, tileData(kRow, "zlib")));
   expectMapError(big, {"layers[0].data", "declares 281474976710656 tiles", "more than"});
   expectMapError(map(4, 1, tileLayer("a", 16777216, 16777216, tileData(kRow, "csv"))),
                  {"layers[0].data", "holds 4 gids"});
@@ -115,11 +118,13 @@ void expectSceneError(const std::string& text, std::initializer_list<std::string
 }
 
 std::string scene(const std::string& members) {
-  return R"({"format": "tunnelvision-scene", "version": 1)" + (members.empty() ? "" : ", " + members) + "}";
+  return R"({"format": "tunnelvision-scene", "version": 1)" +
+         (members.empty() ? "" : ", " + members) + "}";
 }
 
 TEST(MalformedScene, EachBadValueIsNamedByItsPath) {
-  expectSceneError(scene(R"("solids": [[0, 0, 16, 16], [0, 0, -16, 16]])"), {"s.json", "solids[1][2]", "-16"});
+  expectSceneError(scene(R"("solids": [[0, 0, 16, 16], [0, 0, -16, 16]])"),
+                   {"s.json", "solids[1][2]", "-16"});
   expectSceneError(scene(R"("bodies": [{"rect": [0, 0, 8, 8], "motion": "teleport"}])"),
                    {"bodies[0].motion", "teleport", "fly, bullet, walker, player"});
   expectSceneError(scene(R"("bodies": [{"rect": [0, 0, 8, 8], "velocity": [1e300, 0]}])"),
@@ -138,10 +143,32 @@ TEST(MalformedScene, EachBadValueIsNamedByItsPath) {
 }
 
 TEST(MalformedScene, RulesAndParametersMustMatchABuiltinScene) {
-  expectError([] { return makeScene(parseSceneFile(scene(R"("rules": "warp", "params": {})"), "s.json")); },
-              {"s.json", "rules", "warp", "bullets-wall"});
-  expectError([] { return makeScene(parseSceneFile(scene(R"("rules": "crowd", "params": {"speed": 1})"), "s.json")); },
-              {"s.json", "params", "missing"});
+  expectError(
+      [] { return makeScene(parseSceneFile(scene(R"("rules": "warp", "params": {})"), "s.json")); },
+      {"s.json", "rules", "warp", "bullets-wall"});
+  expectError(
+      [] {
+        return makeScene(
+            parseSceneFile(scene(R"("rules": "crowd", "params": {"speed": 1})"), "s.json"));
+      },
+      {"s.json", "params", "missing"});
+}
+
+TEST(MalformedScene, ABuiltinScenesRulesGetTheBodiesTheyWereBuiltFor) {
+  // bullets-enemies pairs body k with body k + 1 and corner-graze aims shot k at tiles[group]:
+  // a body more or less, or another group, would send those rules out of bounds.
+  const sim::SceneDef& pairs = sim::findScene("bullets-enemies");
+  Level lv = exportScene(pairs, pairs.defaults());
+  lv.bodies.pop_back();
+  const std::string fewer = writeSceneFile(lv);
+  expectError([&] { return makeScene(parseSceneFile(fewer, "s.json")); },
+              {"s.json", "bodies", "expect 200 bodies", "has 199"});
+  const sim::SceneDef& graze = sim::findScene("corner-graze");
+  Level regrouped = exportScene(graze, graze.defaults());
+  regrouped.bodies[3].body.group = 99999;
+  const std::string text = writeSceneFile(regrouped);
+  expectError([&] { return makeScene(parseSceneFile(text, "s.json")); },
+              {"s.json", "bodies[3].group", "99999"});
 }
 
 // [SECTION] mutation loop -------------------------------------------------------------------------
@@ -158,11 +185,21 @@ int mutate(const std::string& text, std::uint64_t seed, int rounds, Load&& load)
     for (int e = 0; e < edits && !t.empty(); ++e) {
       const std::size_t at = rng.below(t.size());
       switch (rng.below(5)) {
-        case 0: t[at] = static_cast<char>(rng.below(256)); break;
-        case 1: t.erase(at, 1 + rng.below(16)); break;
-        case 2: t.insert(at, t.substr(at, 1 + rng.below(32))); break;
-        case 3: t.insert(at, rng.below(2) ? "99999999999" : "-1"); break;
-        default: t[at] = "[]{},:\"0e-"[rng.below(10)]; break;
+        case 0:
+          t[at] = static_cast<char>(rng.below(256));
+          break;
+        case 1:
+          t.erase(at, 1 + rng.below(16));
+          break;
+        case 2:
+          t.insert(at, t.substr(at, 1 + rng.below(32)));
+          break;
+        case 3:
+          t.insert(at, rng.below(2) ? "99999999999" : "-1");
+          break;
+        default:
+          t[at] = "[]{},:\"0e-"[rng.below(10)];
+          break;
       }
     }
     try {
@@ -182,11 +219,13 @@ TEST(Mutation, CorruptedMapsAndSceneFilesLoadOrFailCleanly) {
       {"id": 1, "type": "walker", "x": 20, "y": 40, "point": true},
       {"id": 2, "type": "spawner", "x": 100, "y": 0, "width": 4, "height": 40,
        "properties": [{"name": "count", "type": "int", "value": 4}]},
-      {"id": 3, "x": 0, "y": 0, "width": 8, "height": 8, )" + collidable() + "}]}";
+      {"id": 3, "x": 0, "y": 0, "width": 8, "height": 8, )" +
+                              collidable() + "}]}";
   int rounds = 0, errors = 0;
   for (const char* format : {"csv", "zlib", "gzip"}) {
     const std::string text =
-        map(8, 4, tileLayer("g", 8, 4, tileData(gids, format), collidable()) + "," + objects, tileset("1"));
+        map(8, 4, tileLayer("g", 8, 4, tileData(gids, format), collidable()) + "," + objects,
+            tileset("1"));
     errors += mutate(text, 7, 600, [](const std::string& t) {
       const sim::SceneDef def = makeScene(parseTiledMap(t, "m.tmj"));
       sim::Simulation sim(def, def.defaults());  // whatever loaded must also run
@@ -195,7 +234,7 @@ TEST(Mutation, CorruptedMapsAndSceneFilesLoadOrFailCleanly) {
     });
     rounds += 600;
   }
-  for (const char* name : {"platformer", "bullets-enemies"}) {
+  for (const char* name : {"platformer", "bullets-enemies", "corner-graze", "bounce-gap"}) {
     const sim::SceneDef& s = sim::findScene(name);
     const std::string text = writeSceneFile(exportScene(s, s.defaults(), "continuous"));
     errors += mutate(text, 11, 300, [](const std::string& t) {

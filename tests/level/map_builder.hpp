@@ -17,7 +17,8 @@ inline std::string base64(const std::vector<std::uint8_t>& bytes) {
   std::string out;
   std::size_t i = 0;
   for (; i + 2 < bytes.size(); i += 3) {
-    const std::uint32_t v = std::uint32_t{bytes[i]} << 16 | std::uint32_t{bytes[i + 1]} << 8 | bytes[i + 2];
+    const std::uint32_t v =
+        std::uint32_t{bytes[i]} << 16 | std::uint32_t{bytes[i + 1]} << 8 | bytes[i + 2];
     for (int k = 18; k >= 0; k -= 6) out += kAlphabet[(v >> k) & 63];
   }
   if (i + 1 == bytes.size()) {
@@ -84,13 +85,14 @@ inline std::string tileset(const std::string& collidableTiles = "") {
   while (at < collidableTiles.size()) {
     std::size_t comma = collidableTiles.find(',', at);
     if (comma == std::string::npos) comma = collidableTiles.size();
-    tiles += std::string(tiles.empty() ? "" : ",") + "{\"id\": " +
-             collidableTiles.substr(at, comma - at) +
+    tiles += std::string(tiles.empty() ? "" : ",") +
+             "{\"id\": " + collidableTiles.substr(at, comma - at) +
              R"(, "properties": [{"name": "collidable", "type": "bool", "value": true}]})";
     at = comma + 1;
   }
   return R"({"firstgid": 1, "name": "tiles", "tilecount": 16, "columns": 4, "tilewidth": 16,
-             "tileheight": 16, "tiles": [)" + tiles + "]}";
+             "tileheight": 16, "tiles": [)" +
+         tiles + "]}";
 }
 
 /// A finite orthogonal map of 16 px tiles.

@@ -48,7 +48,8 @@ TEST_P(TileEncodings, FlipFlagsAreMaskedOff) {
   gids[9] |= 0x40000000u;   // vertical
   gids[10] |= 0x20000000u;  // diagonal
   gids[11] |= 0xF0000000u;
-  const std::string text = map(4, 3, tileLayer("ground", 4, 3, tileData(gids, GetParam())), tileset("1"));
+  const std::string text =
+      map(4, 3, tileLayer("ground", 4, 3, tileData(gids, GetParam())), tileset("1"));
   EXPECT_EQ(solidsOf(parseTiledMap(text, "m.tmj")), kFloorOnly);
 }
 
@@ -56,7 +57,8 @@ INSTANTIATE_TEST_SUITE_P(Tiled, TileEncodings, ::testing::Values("csv", "base64"
 
 TEST(Tiled, TilesetTilePropertiesMakeOnlyThoseTilesSolid) {
   // STI's convention: tile 1 (gid 2) has collidable = true; the layer has no property.
-  const std::string text = map(4, 3, tileLayer("ground", 4, 3, tileData(kGids, "csv")), tileset("1"));
+  const std::string text =
+      map(4, 3, tileLayer("ground", 4, 3, tileData(kGids, "csv")), tileset("1"));
   EXPECT_EQ(solidsOf(parseTiledMap(text, "m.tmj")), kFloorOnly);
 }
 
@@ -75,8 +77,8 @@ TEST(Tiled, ALayerNamedOnTheCommandLineIsSolidAndWithoutItNothingIs) {
 }
 
 TEST(Tiled, ACollidableFalseLayerStillHonoursItsTilesProperties) {
-  const std::string text = map(4, 3, tileLayer("ground", 4, 3, tileData(kGids, "csv"), collidable(false)),
-                               tileset("1"));
+  const std::string text =
+      map(4, 3, tileLayer("ground", 4, 3, tileData(kGids, "csv"), collidable(false)), tileset("1"));
   EXPECT_EQ(solidsOf(parseTiledMap(text, "m.tmj")), kFloorOnly);
 }
 
@@ -86,16 +88,19 @@ TEST(Tiled, InfiniteMapsReadEveryChunkAtItsOwnPlace) {
     const std::vector<std::uint32_t> left = {0, 0, 0, 3}, right = {3, 0, 0, 3};
     std::string chunk = [&](const std::vector<std::uint32_t>& g, int x) {
       std::string data = tileData(g, format);
-      if (std::string(format) != "csv") data = "\"data\"" + data.substr(data.find(", \"data\"") + 8);
-      return R"({"x": )" + std::to_string(x) + R"(, "y": 2, "width": 4, "height": 1, )" + data + "}";
+      if (std::string(format) != "csv")
+        data = "\"data\"" + data.substr(data.find(", \"data\"") + 8);
+      return R"({"x": )" + std::to_string(x) + R"(, "y": 2, "width": 4, "height": 1, )" + data +
+             "}";
     }(left, -4) + "," + [&](const std::vector<std::uint32_t>& g, int x) {
       std::string data = tileData(g, format);
-      if (std::string(format) != "csv") data = "\"data\"" + data.substr(data.find(", \"data\"") + 8);
-      return R"({"x": )" + std::to_string(x) + R"(, "y": 2, "width": 4, "height": 1, )" + data + "}";
+      if (std::string(format) != "csv")
+        data = "\"data\"" + data.substr(data.find(", \"data\"") + 8);
+      return R"({"x": )" + std::to_string(x) + R"(, "y": 2, "width": 4, "height": 1, )" + data +
+             "}";
     }(right, 0);
-    const std::string encoding = std::string(format) == "csv"
-                                     ? ""
-                                     : R"("encoding": "base64", "compression": "zlib", )";
+    const std::string encoding =
+        std::string(format) == "csv" ? "" : R"("encoding": "base64", "compression": "zlib", )";
     const std::string layer = R"({"type": "tilelayer", "name": "g", )" + encoding +
                               R"("chunks": [)" + chunk + "], " + collidable() + "}";
     std::string text = map(0, 0, layer);
@@ -108,7 +113,8 @@ TEST(Tiled, InfiniteMapsReadEveryChunkAtItsOwnPlace) {
 TEST(Tiled, LayerAndGroupOffsetsMoveTheirTiles) {
   const std::string inner =
       tileLayer("ground", 4, 3, tileData(kGids, "csv"), collidable() + R"(, "offsetx": 3)");
-  const std::string group = R"({"type": "group", "name": "g", "offsety": -8, "layers": [)" + inner + "]}";
+  const std::string group =
+      R"({"type": "group", "name": "g", "offsety": -8, "layers": [)" + inner + "]}";
   const std::vector<Rect> got = solidsOf(parseTiledMap(map(4, 3, group), "m.tmj"));
   ASSERT_EQ(got.size(), kAllTiles.size());
   for (std::size_t i = 0; i < got.size(); ++i) {
@@ -120,11 +126,13 @@ TEST(Tiled, LayerAndGroupOffsetsMoveTheirTiles) {
 //   +-------+ wall: collidable layer                  [tile object]: its y is its bottom
 //   |       |            a collidable object in a plain layer; a plain object is ignored
 const std::string kObjects = R"(
-  {"type": "objectgroup", "name": "walls", )" + collidable() + R"(, "objects": [
+  {"type": "objectgroup", "name": "walls", )" +
+                             collidable() + R"(, "objects": [
     {"id": 1, "x": 0, "y": 0, "width": 64, "height": 8},
     {"id": 2, "gid": 2, "x": 100, "y": 50, "width": 16, "height": 16}]},
   {"type": "objectgroup", "name": "decor", "objects": [
-    {"id": 3, "x": 10, "y": 20, "width": 5, "height": 6, )" + collidable() + R"(},
+    {"id": 3, "x": 10, "y": 20, "width": 5, "height": 6, )" +
+                             collidable() + R"(},
     {"id": 4, "x": 30, "y": 20, "width": 5, "height": 6},
     {"id": 5, "x": 30, "y": 20, "ellipse": true, "width": 5, "height": 6}]})";
 
@@ -142,17 +150,22 @@ std::string prop(const std::string& name, const std::string& type, const std::st
 }
 
 TEST(Tiled, ClassedObjectsBecomeBodiesWithTheirProperties) {
-  const std::string layer = R"({"type": "objectgroup", "name": "actors", "objects": [)" +
+  const std::string layer =
+      R"({"type": "objectgroup", "name": "actors", "objects": [)" +
       object("player", R"("x": 40, "y": 100, "point": true)",
              prop("speed", "float", "90") + "," + prop("jump", "float", "48") + "," +
-                 prop("every", "int", "30")) + "," +
+                 prop("every", "int", "30")) +
+      "," +
       object("walker", R"("x": 80, "y": 88, "width": 12, "height": 12)",
-             prop("direction", "string", "\"left\"")) + "," +
+             prop("direction", "string", "\"left\"")) +
+      "," +
       object("bullet", R"("x": 8, "y": 60, "width": 4, "height": 4)",
-             prop("speed", "float", "1920") + "," + prop("angle", "float", "90")) + "," +
+             prop("speed", "float", "1920") + "," + prop("angle", "float", "90")) +
+      "," +
       object("spawner", R"("x": 200, "y": 0, "width": 4, "height": 30)",
              prop("count", "int", "3") + "," + prop("speed", "float", "600") + "," +
-                 prop("angle", "float", "180")) + "]}";
+                 prop("angle", "float", "180")) +
+      "]}";
   // Class in Tiled 1.9's "class" member works the same as "type".
   std::string text = map(20, 10, layer);
   const Level lv = parseTiledMap(text, "m.tmj");
@@ -187,13 +200,17 @@ TEST(Tiled, ClassedObjectsBecomeBodiesWithTheirProperties) {
 std::string arena() {
   std::vector<std::uint32_t> gids(22 * 6, 0);
   for (int x = 0; x < 22; ++x) gids[5 * 22 + static_cast<std::size_t>(x)] = 1;
-  for (int y = 0; y < 6; ++y) gids[static_cast<std::size_t>(y) * 22] = gids[static_cast<std::size_t>(y) * 22 + 21] = 1;
-  const std::string actors = R"({"type": "objectgroup", "name": "actors", "objects": [)" +
+  for (int y = 0; y < 6; ++y)
+    gids[static_cast<std::size_t>(y) * 22] = gids[static_cast<std::size_t>(y) * 22 + 21] = 1;
+  const std::string actors =
+      R"({"type": "objectgroup", "name": "actors", "objects": [)" +
       object("walker", R"("x": 40, "y": 80, "point": true)", prop("speed", "float", "120")) + "," +
       object("spawner", R"("x": 200, "y": 20, "width": 4, "height": 56)",
              prop("count", "int", "10") + "," + prop("speed", "float", "7680") + "," +
-                 prop("size", "float", "2")) + "]}";
-  return map(22, 6, tileLayer("ground", 22, 6, tileData(gids, "zlib"), collidable()) + "," + actors);
+                 prop("size", "float", "2")) +
+      "]}";
+  return map(22, 6,
+             tileLayer("ground", 22, 6, tileData(gids, "zlib"), collidable()) + "," + actors);
 }
 
 TEST(Tiled, AWalkerWalksTheFloorAndBulletsStopAtTheWall) {

@@ -78,8 +78,14 @@ const SceneSource::Loaded& SceneSource::load() const {
   return *slot_->loaded;
 }
 
-const sim::SceneDef& SceneSource::scene() const { return load().scene; }
-std::optional<std::string> SceneSource::mover() const { return load().mover; }
-std::vector<std::string> SceneSource::notes() const { return load().notes; }
+const sim::SceneDef& SceneSource::scene() const {
+  return load().scene;
+}
+std::optional<std::string> SceneSource::mover() const {
+  return load().mover;
+}
+std::vector<std::string> SceneSource::notes() const {
+  return load().notes;
+}
 
 }  // namespace tv::app

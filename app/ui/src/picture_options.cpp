@@ -187,7 +187,8 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
     }
   }
   if (namedScene && o.file.given()) {
-    throw UsageError{"--scene and " + o.file.describe() + ": give a built-in scene or a file, not both"};
+    throw UsageError{"--scene and " + o.file.describe() +
+                     ": give a built-in scene or a file, not both"};
   }
   if (o.file.strayLayers()) throw UsageError{"--solid-layer goes with --map"};
   if (o.ticks.size() > 1 && o.out && o.out->find("{tick}") == std::string::npos) {

@@ -20,7 +20,8 @@ Json parseJson(std::string_view text, std::string_view file) {
   } catch (const Json::exception& e) {
     // e.g. a number too large for a double ("1e999"): nlohmann reports it without a position.
     std::string what = e.what();
-    if (const auto close = what.find("] "); close != std::string::npos) what = what.substr(close + 2);
+    if (const auto close = what.find("] "); close != std::string::npos)
+      what = what.substr(close + 2);
     tv::fail(std::string(file), "not JSON we can read (" + what + ")");
   }
 }

@@ -42,9 +42,9 @@ class JsonAt {
   /// Elements of an array (throws unless it is one).
   [[nodiscard]] std::size_t size() const;
 
-  [[nodiscard]] double number() const;                      ///< finite
+  [[nodiscard]] double number() const;                        ///< finite
   [[nodiscard]] double number(double min, double max) const;  ///< finite, in [min, max]
-  [[nodiscard]] double positive(double max = 1e9) const;    ///< finite, in (0, max]
+  [[nodiscard]] double positive(double max = 1e9) const;      ///< finite, in (0, max]
   /// A whole number in [min, max] (an integer, or a double with no fraction).
   [[nodiscard]] std::int64_t whole(std::int64_t min, std::int64_t max) const;
   [[nodiscard]] bool boolean() const;

@@ -11,8 +11,8 @@
 namespace tv::level {
 namespace {
 
-sim::ParamSpec spec(std::string_view name, std::string unit, std::string description,
-                    double value, double min, double max, bool integer = false) {
+sim::ParamSpec spec(std::string_view name, std::string unit, std::string description, double value,
+                    double min, double max, bool integer = false) {
   sim::ParamSpec s;
   s.name = std::string(name);
   s.unit = std::move(unit);
@@ -27,8 +27,8 @@ sim::ParamSpec spec(std::string_view name, std::string unit, std::string descrip
 /// Fixed at the file's value: the range is that one value, so setting another names it.
 sim::ParamSpec pinned(std::string_view name, std::string unit, std::string description,
                       double value, bool integer = false) {
-  return spec(name, std::move(unit), std::move(description) + " (fixed by the file)", value,
-              value, value, integer);
+  return spec(name, std::move(unit), std::move(description) + " (fixed by the file)", value, value,
+              value, integer);
 }
 
 Rect shifted(Rect r, double by) {
@@ -60,8 +60,8 @@ std::vector<sim::ParamSpec> levelParams(const Level& level, const sim::SceneDef*
         }
       }
       if (!found) {
-        fail(level.source, "params: missing \"" + s.name + "\" (scene " + builtin->name +
-                               " has " + std::to_string(builtin->params.size()) + " parameters)");
+        fail(level.source, "params: missing \"" + s.name + "\" (scene " + builtin->name + " has " +
+                               std::to_string(builtin->params.size()) + " parameters)");
       }
       try {
         Params::validate(s, v);
@@ -70,8 +70,8 @@ std::vector<sim::ParamSpec> levelParams(const Level& level, const sim::SceneDef*
       }
       ParamSpec p = s;
       p.value = v;
-      const bool free = s.name == param::dt || s.name == param::substep ||
-                        s.name == param::cell || s.name == param::offset;
+      const bool free = s.name == param::dt || s.name == param::substep || s.name == param::cell ||
+                        s.name == param::offset;
       if (!free) {
         p.min = p.max = v;
         p.minExclusive = false;
@@ -82,7 +82,8 @@ std::vector<sim::ParamSpec> levelParams(const Level& level, const sim::SceneDef*
     for (const auto& [n, value] : level.params) {
       const bool known = std::any_of(builtin->params.begin(), builtin->params.end(),
                                      [&](const ParamSpec& s) { return s.name == n; });
-      if (!known) fail(level.source, "params." + n + ": scene " + builtin->name + " has no such parameter");
+      if (!known)
+        fail(level.source, "params." + n + ": scene " + builtin->name + " has no such parameter");
     }
     return out;
   }
@@ -95,15 +96,36 @@ std::vector<sim::ParamSpec> levelParams(const Level& level, const sim::SceneDef*
   out.push_back(pinned(param::tile, "px", "the map's tile", level.tile));
   out.push_back(spec(param::dt, "s", "the fixed physics step", level.dt, 0.0, 1.0));
   out.back().minExclusive = true;
-  out.push_back(spec(param::substep, "px", "substep movers' longest piece; 0 = tile / 2", 0.0,
-                     0.0, 1e9));
+  out.push_back(
+      spec(param::substep, "px", "substep movers' longest piece; 0 = tile / 2", 0.0, 0.0, 1e9));
   out.push_back(spec(param::offset, "px", "added to every coordinate", 0.0, -1e9, 1e9));
   out.push_back(pinned(param::count, "", "bodies in the level",
                        static_cast<double>(level.bodies.size()), true));
   out.push_back(pinned(param::seed, "", "unused: a level has no random layout", 0.0, true));
-  out.push_back(spec(param::cell, "px", "the world's spatial-hash cell size", level.cell, 0.0, 1e6));
+  out.push_back(
+      spec(param::cell, "px", "the world's spatial-hash cell size", level.cell, 0.0, 1e6));
   out.back().minExclusive = true;
   return out;
+}
+
+/// A built-in scene's rules index their bodies by position and by `group` (a bullet's partner is
+/// the next body, a shot's target tile is tiles[group]), so a file whose bodies differ from what
+/// the rules were built for in number or in groups is refused, not run out of bounds.
+void checkAgainstRules(const Level& level, const sim::SceneDef& builtin,
+                       const sim::SceneSetup& built) {
+  if (level.bodies.size() != built.bodies.size()) {
+    fail(level.source, "bodies: the rules of " + builtin.name + " expect " +
+                           std::to_string(built.bodies.size()) +
+                           " bodies (from its parameters), but the file has " +
+                           std::to_string(level.bodies.size()));
+  }
+  for (std::size_t i = 0; i < built.bodies.size(); ++i) {
+    if (level.bodies[i].body.group != built.bodies[i].group) {
+      fail(level.source, "bodies[" + std::to_string(i) + "].group: the rules of " + builtin.name +
+                             " expect " + std::to_string(built.bodies[i].group) + ", but got " +
+                             std::to_string(level.bodies[i].body.group));
+    }
+  }
 }
 
 }  // namespace
@@ -134,7 +156,8 @@ sim::SceneDef makeScene(Level level) {
       std::string valid;
       for (const std::string_view n : sim::builtinScenes().names())
         valid += (valid.empty() ? "" : ", ") + std::string(n);
-      fail(level.source, "rules: no built-in scene is named '" + level.rules + "'; valid: level, " + valid);
+      fail(level.source,
+           "rules: no built-in scene is named '" + level.rules + "'; valid: level, " + valid);
     }
   }
   sim::SceneDef def;
@@ -142,6 +165,7 @@ sim::SceneDef makeScene(Level level) {
   def.name = level.name;
   def.description = level.description;
   def.params = levelParams(level, builtin);
+  if (builtin) checkAgainstRules(level, *builtin, builtin->build(def.defaults()));
   const double fileOffset = builtin ? paramOr(level, sim::param::offset, 0.0) : 0.0;
   const Rect frame = level.camera.value_or(bounds(level));
   def.camera = [frame, fileOffset](const sim::Params& p) {
@@ -156,6 +180,7 @@ sim::SceneDef makeScene(Level level) {
     sim::SceneSetup s;
     if (builtin) {
       s = builtin->build(p);  // its rules, rebuilt from the same parameters
+      checkAgainstRules(lv, *builtin, s);
     } else {
       s.cellSize = p.get(sim::param::cell);
       std::vector<detail::BodyRule> rules;
@@ -166,7 +191,8 @@ sim::SceneDef makeScene(Level level) {
         r.motion = b.motion;
         r.speed = b.speed.value_or(p.get(sim::param::speed));
         r.jump = b.jump;
-        if (r.jump.speed == 0.0) r.jump.speed = std::sqrt(2.0 * std::max(lv.gravity.y, 0.0) * 3.5 * lv.tile);
+        if (r.jump.speed == 0.0)
+          r.jump.speed = std::sqrt(2.0 * std::max(lv.gravity.y, 0.0) * 3.5 * lv.tile);
         r.start = shifted(b.body.rect, by).position();
         rules.push_back(r);
       }
@@ -176,7 +202,8 @@ sim::SceneDef makeScene(Level level) {
     s.gravity = lv.gravity;
     s.solids.clear();
     s.solids.reserve(lv.solids.size());
-    for (const sim::Solid& solid : lv.solids) s.solids.push_back({shifted(solid.rect, by), solid.tag});
+    for (const sim::Solid& solid : lv.solids)
+      s.solids.push_back({shifted(solid.rect, by), solid.tag});
     s.bodies.clear();
     s.bodies.reserve(lv.bodies.size());
     for (const LevelBody& b : lv.bodies) {

@@ -1,6 +1,6 @@
 #pragma once
-// The rules of a level loaded from a file: walkers, players, bullets and fliers (tv::level::Motion).
-// Internal to tv::level.
+// The rules of a level loaded from a file: walkers, players, bullets and fliers
+// (tv::level::Motion). Internal to tv::level.
 
 #include <memory>
 #include <vector>
@@ -13,9 +13,9 @@ namespace tv::level::detail {
 /// What the rules keep for one body (constant: everything that changes lives in the body).
 struct BodyRule {
   Motion motion = Motion::fly;
-  double speed = 0.0;       // px/s: walkers and players
-  JumpScript jump;          // players; speed resolved
-  Vec2 start;               // players respawn here
+  double speed = 0.0;  // px/s: walkers and players
+  JumpScript jump;     // players; speed resolved
+  Vec2 start;          // players respawn here
 };
 
 /// `killY`: a player whose top passes below it respawns at its start.

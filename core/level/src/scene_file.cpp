@@ -26,17 +26,24 @@ constexpr std::int64_t kMaxItems = 1'000'000;  // solids or bodies: far above an
 
 // [SECTION] names ---------------------------------------------------------------------------------
 
-constexpr std::array<std::pair<std::string_view, Motion>, 4> kMotions = {{
-    {"fly", Motion::fly}, {"bullet", Motion::bullet}, {"walker", Motion::walker},
-    {"player", Motion::player}}};
-constexpr std::array<std::pair<std::string_view, sim::BodyRole>, 7> kRoles = {{
-    {"projectile", sim::BodyRole::projectile}, {"enemy", sim::BodyRole::enemy},
-    {"ball", sim::BodyRole::ball}, {"walker", sim::BodyRole::walker},
-    {"player", sim::BodyRole::player}, {"crowd", sim::BodyRole::crowd},
-    {"block", sim::BodyRole::block}}};
-constexpr std::array<std::pair<std::string_view, ResponseId>, 4> kResponses = {{
-    {"touch", response::touch}, {"cross", response::cross}, {"slide", response::slide},
-    {"bounce", response::bounce}}};
+constexpr std::array<std::pair<std::string_view, Motion>, 4> kMotions = {
+    {{"fly", Motion::fly},
+     {"bullet", Motion::bullet},
+     {"walker", Motion::walker},
+     {"player", Motion::player}}};
+constexpr std::array<std::pair<std::string_view, sim::BodyRole>, 7> kRoles = {
+    {{"projectile", sim::BodyRole::projectile},
+     {"enemy", sim::BodyRole::enemy},
+     {"ball", sim::BodyRole::ball},
+     {"walker", sim::BodyRole::walker},
+     {"player", sim::BodyRole::player},
+     {"crowd", sim::BodyRole::crowd},
+     {"block", sim::BodyRole::block}}};
+constexpr std::array<std::pair<std::string_view, ResponseId>, 4> kResponses = {
+    {{"touch", response::touch},
+     {"cross", response::cross},
+     {"slide", response::slide},
+     {"bounce", response::bounce}}};
 
 template <class T, std::size_t N>
 T byName(const std::array<std::pair<std::string_view, T>, N>& names, const JsonAt& at,
@@ -87,7 +94,8 @@ LevelBody readBody(const JsonAt& at) {
   // Defaults by motion, so a hand-written body needs only its rect and motion.
   switch (lb.motion) {
     case Motion::bullet:
-      b.role = sim::BodyRole::projectile, b.layer = sim::kLayerProjectile, b.response = response::touch;
+      b.role = sim::BodyRole::projectile, b.layer = sim::kLayerProjectile,
+      b.response = response::touch;
       break;
     case Motion::walker:
       b.role = sim::BodyRole::walker, b.layer = sim::kLayerEnemy;
@@ -105,7 +113,8 @@ LevelBody readBody(const JsonAt& at) {
       v->fail("expected a velocity within ±1e9 px/s");
   }
   if (auto v = at.find("speed")) {
-    if (!walks) v->failPlain("\"speed\" is for walkers and players (a fly or bullet has a velocity)");
+    if (!walks)
+      v->failPlain("\"speed\" is for walkers and players (a fly or bullet has a velocity)");
     lb.speed = v->positive();
   }
   if (auto v = at.find("direction")) {
@@ -183,7 +192,8 @@ Level readLevel(const JsonAt& root, std::string_view file) {
     if (lv.rules == "level") lv.rules.clear();
   }
   if (auto v = root.find("params")) {
-    if (lv.rules.empty()) v->failPlain("\"params\" go with the rules of a built-in scene (\"rules\")");
+    if (lv.rules.empty())
+      v->failPlain("\"params\" go with the rules of a built-in scene (\"rules\")");
     if (!v->isObject()) v->fail("expected an object of parameter values");
     for (const auto& [key, value] : v->json().items()) {
       lv.params.emplace_back(key, JsonAt(value, v->path() + "." + key, v->file()).number());
@@ -206,7 +216,9 @@ Level readLevel(const JsonAt& root, std::string_view file) {
 
 // [SECTION] writing -------------------------------------------------------------------------------
 
-Json rectJson(const Rect& r) { return Json::array({r.x, r.y, r.w, r.h}); }
+Json rectJson(const Rect& r) {
+  return Json::array({r.x, r.y, r.w, r.h});
+}
 
 Json bodyJson(const LevelBody& lb) {
   const sim::Body& b = lb.body;
@@ -274,11 +286,15 @@ std::string writeSceneFile(const Level& lv) {
     out += n ? "\n  ]" : "]";
     out += last ? "\n" : ",\n";
   };
-  list("solids", lv.solids.size(), [&](std::size_t i) {
-    const sim::Solid& s = lv.solids[i];
-    return s.tag == 0 ? rectJson(s.rect) : Json{{"rect", rectJson(s.rect)}, {"tag", s.tag}};
-  }, false);
-  list("bodies", lv.bodies.size(), [&](std::size_t i) { return bodyJson(lv.bodies[i]); }, true);
+  list(
+      "solids", lv.solids.size(),
+      [&](std::size_t i) {
+        const sim::Solid& s = lv.solids[i];
+        return s.tag == 0 ? rectJson(s.rect) : Json{{"rect", rectJson(s.rect)}, {"tag", s.tag}};
+      },
+      false);
+  list(
+      "bodies", lv.bodies.size(), [&](std::size_t i) { return bodyJson(lv.bodies[i]); }, true);
   out += "}\n";
   return out;
 }

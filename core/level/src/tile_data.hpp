@@ -21,6 +21,8 @@ std::vector<std::uint8_t> inflateExactly(const std::vector<std::uint8_t>& in, st
 
 /// The most bytes `compressed` bytes of deflate data can inflate to (deflate's ratio is at most
 /// 1032:1), so a layer declaring more is refused before inflating.
-inline std::size_t maxInflated(std::size_t compressed) { return compressed * 1032 + 1024; }
+inline std::size_t maxInflated(std::size_t compressed) {
+  return compressed * 1032 + 1024;
+}
 
 }  // namespace tv::level::detail

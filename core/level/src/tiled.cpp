@@ -95,12 +95,11 @@ struct Tilesets {
     auto it = std::upper_bound(sets.begin(), sets.end(), gid,
                                [](std::uint32_t g, const Tileset& t) { return g < t.firstGid; });
     if (it == sets.begin() || gid - std::prev(it)->firstGid >= std::prev(it)->count) {
-      at.failPlain(where + "gid " + std::to_string(gid) + " is in no tileset (they hold gids 1 to " +
-                   std::to_string(end - 1) + ")");
+      at.failPlain(where + "gid " + std::to_string(gid) +
+                   " is in no tileset (they hold gids 1 to " + std::to_string(end - 1) + ")");
     }
     const Tileset& t = *std::prev(it);
-    return t.allSolid ||
-           std::binary_search(t.solidIds.begin(), t.solidIds.end(), gid - t.firstGid);
+    return t.allSolid || std::binary_search(t.solidIds.begin(), t.solidIds.end(), gid - t.firstGid);
   }
 };
 
@@ -116,7 +115,9 @@ Tilesets readTilesets(const JsonAt& map, const TiledOptions& options) {
       const std::string& file = source->string();
       const std::string ext = lower(std::filesystem::path(file).extension().string());
       if (ext != ".tsj" && ext != ".json") {
-        source->fail("unsupported: external tilesets must be JSON (.tsj); export it from Tiled as JSON or embed it");
+        source->fail(
+            "unsupported: external tilesets must be JSON (.tsj); export it from Tiled as JSON or "
+            "embed it");
       }
       if (!options.readTileset) source->fail("external tileset, and no way to read it was given");
       const std::string text = options.readTileset(file);
@@ -131,8 +132,9 @@ Tilesets readTilesets(const JsonAt& map, const TiledOptions& options) {
   for (std::size_t i = 0; i < out.sets.size(); ++i) {
     const std::uint64_t last = std::uint64_t{out.sets[i].firstGid} + out.sets[i].count;
     if (i + 1 < out.sets.size() && last > out.sets[i + 1].firstGid) {
-      list->failPlain("tilesets overlap: one starting at gid " + std::to_string(out.sets[i].firstGid) +
-                      " holds " + std::to_string(out.sets[i].count) + " tiles, past gid " +
+      list->failPlain("tilesets overlap: one starting at gid " +
+                      std::to_string(out.sets[i].firstGid) + " holds " +
+                      std::to_string(out.sets[i].count) + " tiles, past gid " +
                       std::to_string(out.sets[i + 1].firstGid));
     }
     out.end = static_cast<std::uint32_t>(std::min<std::uint64_t>(last, kFlipBits));
@@ -235,7 +237,8 @@ void readTileLayer(MapContext& m, const JsonAt& layer, Vec2 offset, bool infinit
   m.compression.clear();
   if (auto e = layer.find("encoding")) {
     m.encoding = e->string();
-    if (m.encoding != "csv" && m.encoding != "base64") e->fail("unsupported encoding (csv or base64)");
+    if (m.encoding != "csv" && m.encoding != "base64")
+      e->fail("unsupported encoding (csv or base64)");
   }
   if (auto c = layer.find("compression")) {
     m.compression = c->string();
@@ -267,7 +270,9 @@ void readTileLayer(MapContext& m, const JsonAt& layer, Vec2 offset, bool infinit
 
 // [SECTION] objects -------------------------------------------------------------------------------
 
-double degrees(double d) { return d * std::numbers::pi / 180.0; }
+double degrees(double d) {
+  return d * std::numbers::pi / 180.0;
+}
 
 /// The object's rect, with a point's size from `size` centred on the point (bottom-centred for
 /// walkers and players, so their feet are where the point is).
@@ -360,8 +365,7 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid) {
     // A spawner fires `count` bullets at once, spread evenly along its longer side (a point
     // spawner lines them up across the direction of fire, two sizes apart), optionally fanned
     // over `spread` degrees.
-    const std::int64_t count =
-        property(o, "count") ? property(o, "count")->whole(1, 10'000) : 8;
+    const std::int64_t count = property(o, "count") ? property(o, "count")->whole(1, 10'000) : 8;
     const double spread = numberProperty(o, "spread", 0.0, 360.0).value_or(0.0);
     const Rect area = objectRect(o, offset, 0.0, false);
     const Vec2 centre{area.x + area.w / 2, area.y + area.h / 2};
@@ -386,7 +390,8 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid) {
   }
   const bool solid = layerSolid || flag(o, "collidable");
   if (!solid) return;
-  if (!shape.empty()) o.failPlain("unsupported: a collidable " + shape + " (only rectangles can be solid)");
+  if (!shape.empty())
+    o.failPlain("unsupported: a collidable " + shape + " (only rectangles can be solid)");
   if (auto r = o.find("rotation"); r && r->number() != 0.0) {
     r->fail("unsupported: a collidable rectangle must not be rotated");
   }
@@ -467,8 +472,8 @@ Level parseTiledMap(std::string_view text, std::string_view file, const TiledOpt
     if (std::find(m.layerNames.begin(), m.layerNames.end(), wanted) == m.layerNames.end()) {
       std::string names;
       for (const std::string& n : m.layerNames) names += (names.empty() ? "" : ", ") + n;
-      fail(name, "--solid-layer '" + wanted + "': the map has no layer of that name (its layers: " +
-                     names + ")");
+      fail(name, "--solid-layer '" + wanted +
+                     "': the map has no layer of that name (its layers: " + names + ")");
     }
   }
   if (!infinite) {
@@ -483,11 +488,13 @@ Level parseTiledMap(std::string_view text, std::string_view file, const TiledOpt
   });
   if (!gravity && !anyWalker) lv.gravity = {};
   if (lv.solids.empty()) {
-    lv.notes.push_back(name + ": nothing is solid: give a layer, tile or object the bool property "
-                              "'collidable' = true, or name a layer with --solid-layer");
+    lv.notes.push_back(name +
+                       ": nothing is solid: give a layer, tile or object the bool property "
+                       "'collidable' = true, or name a layer with --solid-layer");
   }
   if (lv.bodies.empty()) {
-    lv.notes.push_back(name + ": no bodies: add objects of class player, walker, bullet or spawner");
+    lv.notes.push_back(name +
+                       ": no bodies: add objects of class player, walker, bullet or spawner");
   }
   return lv;
 }

@@ -20,7 +20,8 @@ class SceneSource {
   static constexpr const char* kUsage =
       "  --map FILE       a Tiled JSON map (.tmj/.json) instead of --scene\n"
       "  --solid-layer N  with --map: every tile and object of layer N is solid (repeatable)\n"
-      "  --scene-file F   a scene file (JSON; tv-run --export-scene writes one) instead of --scene\n";
+      "  --scene-file F   a scene file (JSON; tv-run --export-scene writes one) instead of "
+      "--scene\n";
 
   /// A file opened from a menu or dropped on a window: a map if it ends in .tmj, a scene file
   /// if it is JSON that says "tunnelvision-scene" near its start, else a map.

@@ -43,15 +43,15 @@ struct LevelBody {
 };
 
 struct Level {
-  std::string name;         ///< shown in the tools (the file's stem unless the file names it)
-  std::string description;  ///< one line
-  std::string source;       ///< the file it came from, for messages
-  double cell = 64.0;       ///< the world's spatial-hash cell, px
-  double dt = 1.0 / 60.0;   ///< the fixed step, s
-  double tile = 16.0;       ///< px: the substep movers' default piece is tile / 2
-  double speed = 150.0;     ///< px/s: walkers and players with no speed of their own
-  Vec2 gravity;             ///< px/s², for bodies that fall
-  std::optional<Rect> camera;     ///< what to frame; nullopt: everything in the level
+  std::string name;            ///< shown in the tools (the file's stem unless the file names it)
+  std::string description;     ///< one line
+  std::string source;          ///< the file it came from, for messages
+  double cell = 64.0;          ///< the world's spatial-hash cell, px
+  double dt = 1.0 / 60.0;      ///< the fixed step, s
+  double tile = 16.0;          ///< px: the substep movers' default piece is tile / 2
+  double speed = 150.0;        ///< px/s: walkers and players with no speed of their own
+  Vec2 gravity;                ///< px/s², for bodies that fall
+  std::optional<Rect> camera;  ///< what to frame; nullopt: everything in the level
   std::optional<std::string> mover;  ///< the mover the file suggests, if any
   std::vector<sim::Solid> solids;
   std::vector<LevelBody> bodies;
