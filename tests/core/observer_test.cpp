@@ -89,9 +89,9 @@ tv::Leg stopShort(const tv::Collision& c, Vec2) { return {c.touch, c.touch - Vec
 //    mover (0,0) 8×8      wall (16,0) 16×16
 //    [m]     |  [####]
 TEST(Observer, SeesEachOutermostCallWithItsResultAndTheFiltersAnswers) {
+  Log log;  // declared first: an observer outlives what it observes
   World w(16);
   const ItemId wall = w.add({16, 0, 16, 16});
-  Log log;
   w.attach(log);
   EXPECT_EQ(log.itemsAtAttach, 1u);
   const ItemId m = w.add({0, 0, 8, 8});
@@ -127,10 +127,10 @@ TEST(Observer, SeesEachOutermostCallWithItsResultAndTheFiltersAnswers) {
 }
 
 TEST(Observer, AMoversWorldCallsArePartOfOneCall) {
+  Log log;  // declared first: an observer outlives what it observes
   World w(16);
   (void)w.add({16, 0, 16, 16});
   const ItemId m = w.add({0, 0, 8, 8});
-  Log log;
   w.attach(log);
   tv::Mover substep(tv::parseMover("substep-discrete"));
   (void)substep.move(w, m, {20, 0});
@@ -143,10 +143,10 @@ TEST(Observer, AMoversWorldCallsArePartOfOneCall) {
 }
 
 TEST(Observer, ABatchStepIsOneCall) {
+  Log log;  // declared first: an observer outlives what it observes
   World w(16);
   const ItemId a = w.add({0, 0, 4, 4});
   const ItemId b = w.add({40, 0, 4, 4});
-  Log log;
   w.attach(log);
   tv::Batch batch;
   const tv::BatchMove moves[] = {{a, {60, 0}}, {b, {-20, 0}}};
@@ -155,10 +155,10 @@ TEST(Observer, ABatchStepIsOneCall) {
 }
 
 TEST(Observer, AUserResponsesLegIsReported) {
+  Log log;  // declared first: an observer outlives what it observes
   World w(16);
   (void)w.add({16, 0, 16, 16});
   const ItemId m = w.add({0, 0, 8, 8});
-  Log log;
   w.attach(log);
   const ResponseId stop = w.addResponse("stop-short", &stopShort);
   (void)w.move(m, {20, 0}, tv::Filter::all(stop));
@@ -169,9 +169,9 @@ TEST(Observer, AUserResponsesLegIsReported) {
 }
 
 TEST(Observer, ACallThatThrowsIsNotReportedAndVoidsItsAnswers) {
+  Log log;  // declared first: an observer outlives what it observes
   World w(16);
   const ItemId m = w.add({0, 0, 8, 8});
-  Log log;
   w.attach(log);
   EXPECT_THROW((void)w.move(m, {std::nan(""), 0}), tv::Error);
   EXPECT_THROW(w.remove(ItemId{7, 0}), tv::Error);
@@ -180,16 +180,16 @@ TEST(Observer, ACallThatThrowsIsNotReportedAndVoidsItsAnswers) {
 }
 
 TEST(Observer, AFixedStepReportsEachFrame) {
+  Log log;  // declared first: an observer outlives what it observes
   tv::FixedStep step(0.25, 1.0);
-  Log log;
   step.attach(&log);
   (void)step.advance(0.6);
   EXPECT_EQ(log.lines, std::vector<std::string>{"advance 2"});
 }
 
 TEST(Observer, ACopyOfAnAttachedWorldReportsToNoOne) {
+  Log log;  // declared first: an observer outlives what it observes
   World w(16);
-  Log log;
   w.attach(log);
   World copy = w;
   EXPECT_EQ(copy.observer(), nullptr);

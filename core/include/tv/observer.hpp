@@ -11,7 +11,8 @@
 /// - user code's answers as they are given, inside the call: the filter's response for each
 ///   pair it is asked about, and the leg each user response (id >= response::kBuiltinCount)
 ///   returned — the two things a replay cannot recompute.
-/// An observer must not call back into the world it observes.
+/// An observer must not call back into the world it observes, and must outlive its attachment
+/// (or detach first): a World or FixedStep tells its observer when it is destroyed.
 
 #include <cstdint>
 #include <span>
