@@ -141,7 +141,13 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
       break;
   }
   try {
-    goTo(o.ticks.front());
+    goTo(o.ticks.front(), true);
+    if (tick() < o.ticks.front()) {
+      throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) +
+                           ": the scene ends at tick " + std::to_string(tick())};
+    }
+  } catch (const ui::UsageError&) {
+    throw;
   } catch (const Error& e) {
     throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) + ": " + e.what()};
   }
@@ -249,7 +255,7 @@ std::uint64_t Debugger::tick() const {
   return sessions_.front()->sim().ticks();
 }
 
-void Debugger::goTo(std::uint64_t t) {
+void Debugger::goTo(std::uint64_t t, bool stopAtEnd) {
   for (std::size_t k = 0; k < sessions_.size(); ++k) {
     ui::Session& s = *sessions_[k];
     sim::Simulation& sim = s.sim();
@@ -259,9 +265,27 @@ void Debugger::goTo(std::uint64_t t) {
     if (from < sim.oldestTick()) s.restart(params_, movers_[k]);
     sim.seek(from);
     s.select(selected_);  // the history starts afresh and is re-traced below
-    while (sim.ticks() < t) s.tick();
   }
-  furthest_ = std::max(furthest_, t);
+  // In step, so that with stopAtEnd they stop when every mover's scene has ended short of `t`
+  // (a mover that ended early otherwise runs on with the others).
+  const auto behind = [&] {
+    return std::any_of(sessions_.begin(), sessions_.end(),
+                       [&](const auto& s) { return s->sim().ticks() < t; });
+  };
+  const auto ended = [&] {
+    return std::all_of(sessions_.begin(), sessions_.end(),
+                       [](const auto& s) { return s->sim().finished(); });
+  };
+  const auto noneThere = [&] {
+    return std::none_of(sessions_.begin(), sessions_.end(),
+                        [&](const auto& s) { return s->sim().ticks() >= t; });
+  };
+  while (behind() && !(stopAtEnd && ended() && noneThere())) {
+    for (auto& s : sessions_) {
+      if (s->sim().ticks() < t) s->tick();
+    }
+  }
+  furthest_ = std::max(furthest_, tick());
   clock_ = 0.0;
 }
 

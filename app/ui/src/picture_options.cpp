@@ -3,6 +3,7 @@
 
 #include "tv/app/flags.hpp"
 #include "tv/app/vocabulary.hpp"
+#include "tv/app/work_limit.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -31,6 +32,16 @@ std::vector<std::string> splitList(std::string_view flag, std::string_view text)
 
 std::uint64_t parseTick(std::string_view flag, std::string_view text) {
   return app::parseWhole<UsageError>(flag, text);
+}
+
+// A tick to open at: within the work limit, so that a scene that never ends cannot hang the tool.
+std::uint64_t parseOpeningTick(std::string_view flag, std::string_view text) {
+  const std::uint64_t t = parseTick(flag, text);
+  if (t > app::kMaxTicks) {
+    throw UsageError{"--" + std::string(flag) + " " + std::to_string(t) +
+                     ": beyond the work limit of " + std::to_string(app::kMaxTicks) + " ticks"};
+  }
+  return t;
 }
 
 double parseReal(std::string_view flag, std::string_view text) {
@@ -132,12 +143,12 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       }
     } else if (name == "tick") {
       if (o.tickGiven) throw UsageError{"--tick: the tick was already given (by --tick or --ticks)"};
-      o.ticks = {parseTick(name, value)};
+      o.ticks = {parseOpeningTick(name, value)};
       o.tickGiven = true;
     } else if (name == "ticks") {
       if (o.tickGiven) throw UsageError{"--ticks: the tick was already given (by --tick or --ticks)"};
       o.ticks.clear();
-      for (const std::string& t : splitList(name, value)) o.ticks.push_back(parseTick(name, t));
+      for (const std::string& t : splitList(name, value)) o.ticks.push_back(parseOpeningTick(name, t));
       std::sort(o.ticks.begin(), o.ticks.end());
       o.ticks.erase(std::unique(o.ticks.begin(), o.ticks.end()), o.ticks.end());
       o.tickGiven = true;

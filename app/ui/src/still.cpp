@@ -147,12 +147,23 @@ Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
 }
 
 void Still::advanceTo(std::uint64_t tick) {
-  for (auto& s : sessions_) {
-    try {
-      s->advanceTo(tick, o_.renderHz);
-    } catch (const Error& e) {
-      throw UsageError{"--tick " + std::to_string(tick) + ": " + e.what()};
+  try {
+    // First as far as the scene goes: a tick after every mover's end is refused, not run for
+    // ever; a mover that ended early then runs on to the tick the others reach.
+    std::uint64_t reached = 0;
+    for (auto& s : sessions_) {
+      s->advanceTo(tick, o_.renderHz, true);
+      reached = std::max(reached, s->sim().ticks());
     }
+    if (reached < tick) {
+      throw UsageError{"--tick " + std::to_string(tick) + ": the scene ends at tick " +
+                       std::to_string(reached)};
+    }
+    for (auto& s : sessions_) s->advanceTo(tick, o_.renderHz);
+  } catch (const UsageError&) {
+    throw;
+  } catch (const Error& e) {
+    throw UsageError{"--tick " + std::to_string(tick) + ": " + e.what()};
   }
 }
 
