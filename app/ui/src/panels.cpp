@@ -70,13 +70,19 @@ void rowLabel(const char* text) {
 }
 
 // Applies an edit through Params::set, which validates; a rejected value is reported, not
-// clamped.
-void setDraft(DebuggerState& st, const std::string& name, double v) {
+// clamped, and changes nothing: the parameter goes back to the value that runs. A typed value
+// arrives keystroke by keystroke ("1", "1e", "1e9"), so the draft must not keep the "1".
+void setDraft(DebuggerState& st, const Session& session, const std::string& name, double v) {
   try {
     st.draft.set(name, v);
     st.error.clear();
   } catch (const Error& e) {
     st.error = e.what();
+    const sim::SceneDef* scene = sim::builtinScenes().tryFind(st.draftScene);
+    const sim::Params running = st.draftScene == session.sim().scene().name || scene == nullptr
+                                    ? session.sim().params()
+                                    : scene->defaults();
+    st.draft.set(name, running.get(name));
   }
 }
 
@@ -132,11 +138,11 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
         // Dragging snaps; a value typed with Ctrl+click is taken exactly.
         const bool dragging = ImGui::IsMouseDown(ImGuiMouseButton_Left);
         if (dragging) v = snapped(v, ImGui::GetIO().KeyShift, spec.integer);
-        setDraft(st, spec.name, v);
+        setDraft(st, session, spec.name, v);
         // Live while the slider moves when a re-run to this tick is cheap; else on release.
         if (dragging && st.lastRerunMs < kLiveRerunMs) a.restart = true;
       }
-      if (ImGui::IsItemDeactivatedAfterEdit()) a.restart = true;
+      if (ImGui::IsItemDeactivatedAfterEdit() && st.error.empty()) a.restart = true;
       if (ImGui::IsItemActive() && st.lastRerunMs >= kLiveRerunMs) {
         ImGui::SetTooltip("re-runs on release (the last re-run took %.0f ms)", st.lastRerunMs);
       } else if (ImGui::IsItemHovered()) {
