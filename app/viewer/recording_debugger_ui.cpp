@@ -171,8 +171,18 @@ void RecordingDebugger::drawTimeline(ImVec2 display, float h) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f);
   float speed = static_cast<float>(speed_);
-  if (ImGui::SliderFloat("##speed", &speed, 0.25f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
-    speed_ = static_cast<double>(speed);
+  if (ImGui::SliderFloat("##speed", &speed, 0.25f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
+    // A typed rate is not clamped by the slider: one outside 0.25x..4x (a negative one left the
+    // player stuck "playing") is refused and the rate stays.
+    if (std::isfinite(speed) && speed >= 0.25f && speed <= 4.0f) {
+      speed_ = static_cast<double>(speed);
+    } else {
+      char why[96];
+      std::snprintf(why, sizeof why, "playback rate %gx refused: it is 0.25x to 4x",
+                    static_cast<double>(speed));
+      message_ = why;
+    }
+  }
   ImGui::SameLine();
   ImGui::Text("frame %" PRIu64 " (0..%" PRIu64 ")", frame, session_->lastFrame());
 
