@@ -25,6 +25,7 @@
 #include "tv/app/flags.hpp"
 #include "tv/app/scene_source.hpp"
 #include "tv/app/vocabulary.hpp"
+#include "tv/app/missing_value.hpp"
 #include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/level/scene_file.hpp"
@@ -115,7 +116,10 @@ Options parseArgs(int argc, char** argv) {
       value = name.substr(eq + 1);
       name.resize(eq);
     } else {
-      if (i + 1 >= argc) throw UsageError{"--" + name + " needs a value"};
+      if (i + 1 >= argc) {
+        tv::app::refuseMissingValue<UsageError>(
+            name, {"map", "scene-file", "solid-layer", "scene", "mover", "ticks", "body"});
+      }
       value = argv[++i];
     }
     std::string fileError;

@@ -2,6 +2,7 @@
 #include "tv/ui/picture_options.hpp"
 
 #include "tv/app/flags.hpp"
+#include "tv/app/missing_value.hpp"
 #include "tv/app/vocabulary.hpp"
 #include "tv/app/work_limit.hpp"
 
@@ -118,7 +119,10 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
     } else {
       // A flag in the value's place means the value was forgotten.
       if (i + 1 >= argc || std::string_view(argv[i + 1]).substr(0, 2) == "--") {
-        throw UsageError{"--" + name + " needs a value"};
+        app::refuseMissingValue<UsageError>(
+            name, {"map", "scene-file", "solid-layer", "scene", "mover", "compare", "tick", "ticks",
+                   "window", "out", "body", "view", "render-hz", "frames", "caption", "hide",
+                   "show"});
       }
       value = argv[++i];
     }
