@@ -86,9 +86,11 @@ int main(int argc, char** argv) {
       recorder.emplace(o.record);
       game.world().attach(*recorder);
       recorder->attach(step);
-    } catch (const tv::Error& e) {  // an unwritable path: say so, and play on
-      std::cerr << "tv-example-platformer: not recording: " << e.what() << "\n";
-      recorder.reset();
+    } catch (const tv::Error& e) {
+      // An unwritable path: the recording asked for cannot be made, so stop before playing
+      // (a script waiting on the file must not see success).
+      std::cerr << "tv-example-platformer: --record " << o.record << ": " << e.what() << "\n";
+      return 1;
     }
   }
   tv::Recorder* rec = recorder ? &*recorder : nullptr;
