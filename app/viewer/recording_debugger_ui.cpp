@@ -211,7 +211,16 @@ void RecordingDebugger::drawTimeline(ImVec2 display, float h) {
       selectCall(divergence->call);
     }
   } else if (validation_.done()) {
-    ImGui::TextColored(colour(pal::kGood), "|  valid: the replay matches the recording");
+    const ReplaySummary& summary = session_->replay().summary();
+    if (summary.damagedAt) {
+      // Only what could be read was checked: not a verdict on the whole file.
+      ImGui::TextColored(colour(pal::kBad),
+                         "|  the file is cut or damaged at byte %" PRIu64
+                         ": only frames 0..%" PRIu64 " were checked, and they match",
+                         *summary.damagedAt, summary.frames - 1);
+    } else {
+      ImGui::TextColored(colour(pal::kGood), "|  valid: the replay matches the recording");
+    }
   }
   std::optional<std::uint64_t> implausible;
   if (whatIf_) {
