@@ -151,13 +151,44 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
       }
     }
     rowLabel("render rate (Hz)");
+    // Dragging stays within 0..1000 but a typed value does not: refuse one outside, as
+    // tv-render --render-hz does, and keep the rate.
     const double lo = 0.0, hi = 1000.0;
-    ImGui::DragScalar("##render", ImGuiDataType_Double, &st.renderHz, 1.0f, &lo, &hi, "%.0f");
+    double hz = st.renderHz;
+    const bool edited = ImGui::DragScalar("##render", ImGuiDataType_Double, &hz, 1.0f, &lo, &hi,
+                                          "%.0f");
+    // Typed keystroke by keystroke ("1", "1e", "1e9"): a refusal goes back to the rate before
+    // the edit, not to the "1".
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID before = ImGui::GetID("##render-before");
+    if (ImGui::IsItemActivated()) storage->SetFloat(before, static_cast<float>(st.renderHz));
+    if (edited) {
+      if (std::isfinite(hz) && hz >= lo && hz <= hi) {
+        st.renderHz = hz;
+        st.error.clear();
+      } else {
+        st.error = "render rate " + formatNumber(hz) + " Hz refused: it is 0 (none) to 1000 Hz";
+        st.renderHz =
+            static_cast<double>(storage->GetFloat(before, static_cast<float>(st.renderHz)));
+      }
+    }
     rowLabel("traced body");
-    int body = session.selected() ? static_cast<int>(*session.selected()) : -1;
-    if (ImGui::InputInt("##body", &body) && body >= 0 &&
-        static_cast<std::size_t>(body) < session.sim().bodies().size()) {
-      a.select = static_cast<std::size_t>(body);
+    // Typed as a number, so that 1e9 is read as 1e9 (an integer field kept the digits: 19).
+    const std::size_t bodies = session.sim().bodies().size();
+    double body = session.selected() ? static_cast<double>(*session.selected()) : -1.0;
+    const double one = 1.0;
+    if (ImGui::InputScalar("##body", ImGuiDataType_Double, &body, &one, nullptr, "%.0f",
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
+      if (body == -1.0) {
+        st.error.clear();
+      } else if (std::isfinite(body) && body >= 0.0 && body == std::floor(body) &&
+                 body < static_cast<double>(bodies)) {
+        a.select = static_cast<std::size_t>(body);
+        st.error.clear();
+      } else {
+        st.error = "traced body " + formatNumber(body) + " refused: the scene has " +
+                   std::to_string(bodies) + " bodies, 0.." + std::to_string(bodies - 1);
+      }
     }
     ImGui::EndTable();
   }
