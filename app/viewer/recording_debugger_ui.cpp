@@ -530,6 +530,7 @@ void RecordingDebugger::drawHelp() {
   };
   ImGui::SetNextWindowSize({560, 0}, ImGuiCond_Always);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
+  ImGui::SetNextWindowBgAlpha(1.0f);  // over the views: nothing beneath may show through
   if (ImGui::Begin("Help: recordings", &showHelp_,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     if (ImGui::BeginTable("keys", 2)) {
