@@ -325,7 +325,8 @@ void countersContents(const Session& session) {
       ImGui::Text("%zu last, %.2f mean", moves.empty() ? 0 : moves.back().trace.candidates.size(),
                   static_cast<double>(t.candidates) / static_cast<double>(t.moves));
     } else {
-      ImGui::TextColored(colour(pal::kDim), "(no traced body)");
+      // A traced body that has not moved yet is not "no traced body".
+      ImGui::TextColored(colour(pal::kDim), session.selected() ? "(no move yet)" : "(no traced body)");
     }
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
