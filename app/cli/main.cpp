@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "tv/app/user_message.hpp"
 #include "tv/app/flags.hpp"
 #include "tv/app/scene_source.hpp"
 #include "tv/app/vocabulary.hpp"
@@ -326,7 +327,7 @@ int run(const Options& o) {
     try {
       params.set(name, parseNumber(name, value));
     } catch (const tv::Error& e) {
-      throw UsageError{"--" + name + " " + value + ": " + e.what()};
+      throw UsageError{"--" + name + " " + value + ": " + tv::app::userMessage(e)};
     }
   }
   if (o.exportScene) {
@@ -334,7 +335,7 @@ int run(const Options& o) {
       try {
         (void)tv::parseMover(*o.mover);
       } catch (const tv::Error& e) {
-        throw UsageError{"--mover " + *o.mover + ": " + e.what()};
+        throw UsageError{"--mover " + *o.mover + ": " + tv::app::userMessage(e)};
       }
     }
     const std::string text =
@@ -352,7 +353,7 @@ int run(const Options& o) {
     try {
       (void)tv::parseMover(*o.mover);
     } catch (const tv::Error& e) {
-      throw UsageError{"--mover " + *o.mover + ": " + e.what()};
+      throw UsageError{"--mover " + *o.mover + ": " + tv::app::userMessage(e)};
     }
     movers.push_back(*o.mover);
   } else {
@@ -375,7 +376,7 @@ int run(const Options& o) {
       rows.push_back(runOne(*scene, params, m, o));
     } catch (const tv::Error& e) {
       throw UsageError{std::string("scene ") + scene->name + " with mover " + std::string(m) +
-                       ": " + e.what()};
+                       ": " + tv::app::userMessage(e)};
     }
   }
   printTable(*scene, params, rows);
@@ -400,7 +401,7 @@ int main(int argc, char** argv) {
     std::cerr << "tv-run: " << e.message << "\n" << usage();
     return kUsageError;
   } catch (const std::exception& e) {
-    std::cerr << "tv-run: " << e.what() << "\n";
+    std::cerr << "tv-run: " << tv::app::userMessage(e) << "\n";
     return 1;
   }
 }

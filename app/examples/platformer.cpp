@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "platformer_game.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/app/flags.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/recorder.hpp"
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
     } catch (const tv::Error& e) {
       // An unwritable path: the recording asked for cannot be made, so stop before playing
       // (a script waiting on the file must not see success).
-      std::cerr << "tv-example-platformer: --record " << o.record << ": " << e.what() << "\n";
+      std::cerr << "tv-example-platformer: --record " << o.record << ": " << tv::app::userMessage(e) << "\n";
       return 1;
     }
   }

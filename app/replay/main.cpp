@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "tv/app/user_message.hpp"
 #include "tv/app/flags.hpp"
 #include "tv/error.hpp"
 #include "tv/record/replay.hpp"
@@ -245,7 +246,7 @@ int main(int argc, char** argv) {
       tv::MoverSpec spec = tv::parseMover(*o.mover);
       if (o.substep) {
         if (spec.kind != tv::MoverKind::substep) {
-          throw tv::Error("tv-replay: --substep applies to the substep-* movers, not '" + *o.mover +
+          throw tv::Error("--substep applies to the substep-* movers, not '" + *o.mover +
                           "'");
         }
         spec.maxStep = *o.substep;
@@ -259,7 +260,7 @@ int main(int argc, char** argv) {
     if (o.mover) return whatIf(r, o);
     return summary(r);
   } catch (const tv::Error& e) {
-    std::cerr << e.what() << "\n";
+    std::cerr << "tv-replay: " << tv::app::userMessage(e) << "\n";
     return 2;
   }
 }

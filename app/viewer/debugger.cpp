@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cmath>
 
+#include "tv/app/user_message.hpp"
 #include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/still.hpp"
@@ -25,7 +26,7 @@ std::vector<MoverSpec> parseMovers(const std::vector<std::string>& names, const 
     try {
       out.push_back(parseMover(n));
     } catch (const Error& e) {
-      throw ui::UsageError{std::string(flag) + ": " + e.what()};
+      throw ui::UsageError{std::string(flag) + ": " + app::userMessage(e)};
     }
   }
   return out;
@@ -121,7 +122,7 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   try {
     build(scene, params, std::move(movers), 0);
   } catch (const Error& e) {
-    throw ui::UsageError{"scene '" + scene.name + "': " + e.what()};
+    throw ui::UsageError{"scene '" + scene.name + "': " + app::userMessage(e)};
   }
   if (o.body && *o.body >= sessions_.front()->sim().bodies().size()) {
     throw ui::UsageError{"--body: body " + std::to_string(*o.body) +
@@ -149,7 +150,7 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   } catch (const ui::UsageError&) {
     throw;
   } catch (const Error& e) {
-    throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) + ": " + e.what()};
+    throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) + ": " + app::userMessage(e)};
   }
 }
 
@@ -224,7 +225,7 @@ void Debugger::loadScene(const sim::SceneDef& scene) {
     build(scene, scene.defaults(), movers_, 0);
     message_.clear();
   } catch (const Error& e) {
-    reportError("scene '" + scene.name + "': " + e.what());
+    reportError("scene '" + scene.name + "': " + app::userMessage(e));
   }
 }
 
@@ -238,7 +239,7 @@ void Debugger::openFile(const std::string& path) {
     message_.clear();
     for (const std::string& note : file.notes()) reportError(note);
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
   }
 }
 
@@ -247,7 +248,7 @@ void Debugger::setMovers(std::vector<MoverSpec> movers) {
   try {
     build(*scene_, params_, std::move(movers), tick());
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
   }
 }
 
@@ -359,7 +360,7 @@ void Debugger::applyActions(const ui::Actions& a) {
   try {
     primary = parseMover(st.draftMover);
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
     return;
   }
   const bool tuned = primary.name() != movers_.front().name() ||
@@ -384,7 +385,7 @@ void Debugger::applyActions(const ui::Actions& a) {
     notice_.clear();
   } catch (const Error& e) {
     // Refused: the panel shows the values that run, with the reason beside them.
-    reportError(e.what());
+    reportError(app::userMessage(e));
     ui::syncDraft(st, *sessions_.front());
     st.error = message_;
   }
@@ -410,7 +411,7 @@ bool Debugger::tune(const std::string& param, double value) {
   try {
     st.draft.set(param, value);
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
     return false;
   }
   message_.clear();
@@ -520,7 +521,7 @@ void Debugger::tryOpenRecording(const std::string& path) {
     (void)openRecording(path);
     message_.clear();
   } catch (const std::exception& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
   }
 }
 

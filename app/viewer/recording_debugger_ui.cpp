@@ -14,6 +14,7 @@
 #include "imgui.h"
 #include "recording_debugger.hpp"
 #include "timeline.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/ui/palette.hpp"
 
 namespace tv::viewer {
@@ -492,7 +493,7 @@ void RecordingDebugger::drawWhatIfControls() {
       if (substep) m.maxStep = draftSubstep_;
       startWhatIf(m, draftUpdates_);
     } catch (const std::exception& e) {
-      report(e.what());
+      report(app::userMessage(e));
     }
   }
   ImGui::SameLine();

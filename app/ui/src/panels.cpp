@@ -1,4 +1,5 @@
 // The panels: controls, inspector, counters, HUD and legend, as ImGui widget contents.
+#include "tv/app/user_message.hpp"
 #include "tv/ui/panels.hpp"
 
 #include <cfloat>
@@ -77,7 +78,7 @@ void setDraft(DebuggerState& st, const Session& session, const std::string& name
     st.draft.set(name, v);
     st.error.clear();
   } catch (const Error& e) {
-    st.error = e.what();
+    st.error = app::userMessage(e);
     const sim::SceneDef* scene = sim::builtinScenes().tryFind(st.draftScene);
     const sim::Params running = st.draftScene == session.sim().scene().name || scene == nullptr
                                     ? session.sim().params()

@@ -1,4 +1,5 @@
 // The still picture shared by tv-render and tv-debugger's screenshot mode.
+#include "tv/app/user_message.hpp"
 #include "tv/ui/still.hpp"
 
 #include <algorithm>
@@ -76,7 +77,7 @@ sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o) {
     try {
       p.set(name, v);
     } catch (const Error& e) {
-      throw UsageError{flag + " " + text + ": " + e.what()};
+      throw UsageError{flag + " " + text + ": " + app::userMessage(e)};
     }
   }
   return p;
@@ -127,12 +128,12 @@ Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
     try {
       spec = parseMover(m);
     } catch (const Error& e) {
-      throw UsageError{std::string(o.compare ? "--compare" : "--mover") + ": " + e.what()};
+      throw UsageError{std::string(o.compare ? "--compare" : "--mover") + ": " + app::userMessage(e)};
     }
     try {
       sessions_.push_back(std::make_unique<Session>(*scene_, params, spec, std::nullopt));
     } catch (const Error& e) {
-      throw UsageError{"scene '" + scene_->name + "': " + e.what()};
+      throw UsageError{"scene '" + scene_->name + "': " + app::userMessage(e)};
     }
     const sim::Simulation& sim = sessions_.back()->sim();
     if (auto why = app::workLimitExceeded(params, sim.moverSpec(), sim.bodies().size()))
@@ -140,7 +141,7 @@ Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
     try {
       sessions_.back()->select(o.body);
     } catch (const Error& e) {
-      throw UsageError{"--body: " + std::string(e.what())};
+      throw UsageError{"--body: " + app::userMessage(e)};
     }
   }
   for (auto& s : sessions_) raw_.push_back(s.get());
@@ -163,7 +164,7 @@ void Still::advanceTo(std::uint64_t tick) {
   } catch (const UsageError&) {
     throw;
   } catch (const Error& e) {
-    throw UsageError{"--tick " + std::to_string(tick) + ": " + e.what()};
+    throw UsageError{"--tick " + std::to_string(tick) + ": " + app::userMessage(e)};
   }
 }
 
