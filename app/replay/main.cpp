@@ -164,9 +164,9 @@ int stats(tv::Replay& r) {
       ++still;
       continue;
     }
-    std::printf("| %s | %s | %llu | %llu | %s | %llu |\n", it.label.c_str(), it.category.c_str(),
+    std::printf("| %s | %s | %llu | %llu | %.3f | %llu |\n", it.label.c_str(), it.category.c_str(),
                 static_cast<unsigned long long>(it.moves), static_cast<unsigned long long>(it.hits),
-                tv::formatNumber(it.maxSpeed).c_str(),
+                it.maxSpeed,
                 static_cast<unsigned long long>(it.endedOverlapping));
   }
   std::printf("\n%zu items never moved (tiles, walls...).\n", still);

@@ -18,6 +18,16 @@
 
 namespace tv {
 
+namespace {
+// A frame's time for a person: 1/60 s reads 0.0166667, not 0.016666666666666666 (the value
+// that reads back exactly belongs in the file, not in a summary line).
+std::string readableSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", s);
+  return text;
+}
+}  // namespace
+
 std::string_view callKindName(CallKind k) {
   switch (k) {
     case CallKind::add:
@@ -487,7 +497,7 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
                            (c.category.empty() ? "" : " (" + c.category + ")");
             break;
           case CallKind::advance:
-            info.summary = "advance " + formatNumber(c.frameTime) +
+            info.summary = "advance " + readableSeconds(c.frameTime) +
                            " s: " + std::to_string(c.ticks) + " ticks";
             break;
         }
