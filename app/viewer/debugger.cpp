@@ -257,6 +257,7 @@ std::uint64_t Debugger::tick() const {
 }
 
 void Debugger::goTo(std::uint64_t t, bool stopAtEnd) {
+  notice_.clear();  // a notice tells of the tick it was given at ("the scene ended at tick 5")
   for (std::size_t k = 0; k < sessions_.size(); ++k) {
     ui::Session& s = *sessions_[k];
     sim::Simulation& sim = s.sim();
@@ -292,6 +293,7 @@ void Debugger::goTo(std::uint64_t t, bool stopAtEnd) {
 
 void Debugger::stepOnce() {
   paused_ = true;
+  notice_.clear();
   for (auto& s : sessions_) s->tick();
   furthest_ = std::max(furthest_, tick());
 }
@@ -436,8 +438,9 @@ void Debugger::run(Command c) {
                                      [](const auto& s) { return s->sim().finished(); });
       // Play on a scene that has ended plays it again, and says so, rather than pausing at once.
       if (paused_ && ended) {
-        notice_ = "the scene had ended at tick " + std::to_string(tick()) + ": playing again from 0";
+        const std::uint64_t end = tick();
         goTo(0);
+        notice_ = "the scene had ended at tick " + std::to_string(end) + ": playing again from 0";
       }
       paused_ = !paused_;
       clock_ = 0.0;
