@@ -271,8 +271,9 @@ void inspectorContents(const Session& session) {
                     c.normal.x + 0.0, c.normal.y + 0.0, response.c_str(),
                     c.corner ? " (corner)" : "");
         ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kDim));
-        ImGui::TextWrapped("   touch (%.3f, %.3f)  %s (%.3f, %.3f)", c.touch.x, c.touch.y,
-                           "target", c.target.x, c.target.y);
+        // One point a line, unwrapped: ImGui wraps after a '.', which split "87.000" in two.
+        ImGui::Text("   touch (%.3f, %.3f)", c.touch.x, c.touch.y);
+        ImGui::Text("   target (%.3f, %.3f)", c.target.x, c.target.y);
         ImGui::PopStyleColor();
       }
       ImGui::TreePop();
