@@ -22,9 +22,11 @@
 #include <utility>
 #include <vector>
 
+#include "tv/app/user_message.hpp"
 #include "tv/app/flags.hpp"
 #include "tv/app/scene_source.hpp"
 #include "tv/app/vocabulary.hpp"
+#include "tv/app/missing_value.hpp"
 #include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/level/scene_file.hpp"
@@ -115,7 +117,10 @@ Options parseArgs(int argc, char** argv) {
       value = name.substr(eq + 1);
       name.resize(eq);
     } else {
-      if (i + 1 >= argc) throw UsageError{"--" + name + " needs a value"};
+      if (i + 1 >= argc) {
+        tv::app::refuseMissingValue<UsageError>(
+            name, {"map", "scene-file", "solid-layer", "scene", "mover", "ticks", "body"});
+      }
       value = argv[++i];
     }
     std::string fileError;
@@ -322,7 +327,7 @@ int run(const Options& o) {
     try {
       params.set(name, parseNumber(name, value));
     } catch (const tv::Error& e) {
-      throw UsageError{"--" + name + " " + value + ": " + e.what()};
+      throw UsageError{"--" + name + " " + value + ": " + tv::app::userMessage(e)};
     }
   }
   if (o.exportScene) {
@@ -330,7 +335,7 @@ int run(const Options& o) {
       try {
         (void)tv::parseMover(*o.mover);
       } catch (const tv::Error& e) {
-        throw UsageError{"--mover " + *o.mover + ": " + e.what()};
+        throw UsageError{"--mover " + *o.mover + ": " + tv::app::userMessage(e)};
       }
     }
     const std::string text =
@@ -348,7 +353,7 @@ int run(const Options& o) {
     try {
       (void)tv::parseMover(*o.mover);
     } catch (const tv::Error& e) {
-      throw UsageError{"--mover " + *o.mover + ": " + e.what()};
+      throw UsageError{"--mover " + *o.mover + ": " + tv::app::userMessage(e)};
     }
     movers.push_back(*o.mover);
   } else {
@@ -371,7 +376,7 @@ int run(const Options& o) {
       rows.push_back(runOne(*scene, params, m, o));
     } catch (const tv::Error& e) {
       throw UsageError{std::string("scene ") + scene->name + " with mover " + std::string(m) +
-                       ": " + e.what()};
+                       ": " + tv::app::userMessage(e)};
     }
   }
   printTable(*scene, params, rows);
@@ -396,7 +401,7 @@ int main(int argc, char** argv) {
     std::cerr << "tv-run: " << e.message << "\n" << usage();
     return kUsageError;
   } catch (const std::exception& e) {
-    std::cerr << "tv-run: " << e.what() << "\n";
+    std::cerr << "tv-run: " << tv::app::userMessage(e) << "\n";
     return 1;
   }
 }

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "platformer_game.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/app/flags.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/recorder.hpp"
@@ -86,9 +87,11 @@ int main(int argc, char** argv) {
       recorder.emplace(o.record);
       game.world().attach(*recorder);
       recorder->attach(step);
-    } catch (const tv::Error& e) {  // an unwritable path: say so, and play on
-      std::cerr << "tv-example-platformer: not recording: " << e.what() << "\n";
-      recorder.reset();
+    } catch (const tv::Error& e) {
+      // An unwritable path: the recording asked for cannot be made, so stop before playing
+      // (a script waiting on the file must not see success).
+      std::cerr << "tv-example-platformer: --record " << o.record << ": " << tv::app::userMessage(e) << "\n";
+      return 1;
     }
   }
   tv::Recorder* rec = recorder ? &*recorder : nullptr;

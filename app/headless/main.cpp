@@ -17,6 +17,7 @@
 #include "offscreen_gl.hpp"
 #include "options.hpp"
 #include "png.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
@@ -201,7 +202,7 @@ int main(int argc, char** argv) {
     std::cerr << "tv-render: " << e.message << "\n(see tv-render --help)\n";
     return tv::headless::kUsageExit;
   } catch (const std::exception& e) {
-    std::cerr << "tv-render: " << e.what() << "\n";
+    std::cerr << "tv-render: " << tv::app::userMessage(e) << "\n";
     return tv::headless::kFailureExit;
   }
 }

@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "tv/app/user_message.hpp"
 #include "tv/app/flags.hpp"
 #include "tv/error.hpp"
 #include "tv/record/replay.hpp"
@@ -106,6 +107,13 @@ void printWarnings(const tv::Replay& r) {
   for (const std::string& w : r.warnings()) std::cerr << "warning: " << w << "\n";
 }
 
+// What a check of a damaged file did not cover: "" for a whole file.
+std::string damage(const tv::ReplaySummary& s) {
+  if (!s.damagedAt) return "";
+  return "; only frames 0.." + std::to_string(s.frames - 1) + " were checked: the file is cut or " +
+         "damaged at byte " + std::to_string(*s.damagedAt);
+}
+
 int summary(tv::Replay& r) {
   const tv::ReplaySummary& s = r.summary();
   const auto t0 = std::chrono::steady_clock::now();
@@ -119,13 +127,17 @@ int summary(tv::Replay& r) {
   std::printf("collisions  %llu\n", static_cast<unsigned long long>(s.collisions));
   std::printf("items       %zu\n", r.items().size());
   std::printf("file size   %llu bytes\n", static_cast<unsigned long long>(s.bytes));
+  // Of a damaged file only the frames read count: their bytes over their moves.
+  const std::uint64_t bytes = s.damagedAt ? s.bytesRead : s.bytes;
   if (s.moves)
-    std::printf("bytes/move  %.1f\n", static_cast<double>(s.bytes) / static_cast<double>(s.moves));
+    std::printf("bytes/move  %.1f%s\n", static_cast<double>(bytes) / static_cast<double>(s.moves),
+                s.damagedAt ? " (of the frames read)" : "");
   std::printf("replay      %.3f s: %.0f moves/s, %.0f calls/s, %.0f frames/s\n", t,
               static_cast<double>(s.moves) / t, static_cast<double>(s.calls) / t,
               static_cast<double>(s.frames) / t);
-  std::printf("validation  %s\n",
-              d ? "DIVERGED (tv-replay --validate for the report)" : "ok, bit for bit");
+  std::printf("validation  %s%s\n",
+              d ? "DIVERGED (tv-replay --validate for the report)" : "ok, bit for bit",
+              damage(s).c_str());
   return 0;
 }
 
@@ -135,9 +147,9 @@ int validate(tv::Replay& r) {
     std::cout << d->report();
     return 1;
   }
-  std::printf("ok: %llu frames, %llu calls replayed bit for bit\n",
+  std::printf("ok: %llu frames, %llu calls replayed bit for bit%s\n",
               static_cast<unsigned long long>(r.summary().frames),
-              static_cast<unsigned long long>(r.summary().calls));
+              static_cast<unsigned long long>(r.summary().calls), damage(r.summary()).c_str());
   return 0;
 }
 
@@ -152,9 +164,9 @@ int stats(tv::Replay& r) {
       ++still;
       continue;
     }
-    std::printf("| %s | %s | %llu | %llu | %s | %llu |\n", it.label.c_str(), it.category.c_str(),
+    std::printf("| %s | %s | %llu | %llu | %.3f | %llu |\n", it.label.c_str(), it.category.c_str(),
                 static_cast<unsigned long long>(it.moves), static_cast<unsigned long long>(it.hits),
-                tv::formatNumber(it.maxSpeed).c_str(),
+                it.maxSpeed,
                 static_cast<unsigned long long>(it.endedOverlapping));
   }
   std::printf("\n%zu items never moved (tiles, walls...).\n", still);
@@ -234,7 +246,7 @@ int main(int argc, char** argv) {
       tv::MoverSpec spec = tv::parseMover(*o.mover);
       if (o.substep) {
         if (spec.kind != tv::MoverKind::substep) {
-          throw tv::Error("tv-replay: --substep applies to the substep-* movers, not '" + *o.mover +
+          throw tv::Error("--substep applies to the substep-* movers, not '" + *o.mover +
                           "'");
         }
         spec.maxStep = *o.substep;
@@ -248,7 +260,7 @@ int main(int argc, char** argv) {
     if (o.mover) return whatIf(r, o);
     return summary(r);
   } catch (const tv::Error& e) {
-    std::cerr << e.what() << "\n";
+    std::cerr << "tv-replay: " << tv::app::userMessage(e) << "\n";
     return 2;
   }
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cmath>
 
+#include "tv/app/user_message.hpp"
 #include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/still.hpp"
@@ -25,7 +26,7 @@ std::vector<MoverSpec> parseMovers(const std::vector<std::string>& names, const 
     try {
       out.push_back(parseMover(n));
     } catch (const Error& e) {
-      throw ui::UsageError{std::string(flag) + ": " + e.what()};
+      throw ui::UsageError{std::string(flag) + ": " + app::userMessage(e)};
     }
   }
   return out;
@@ -121,7 +122,7 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   try {
     build(scene, params, std::move(movers), 0);
   } catch (const Error& e) {
-    throw ui::UsageError{"scene '" + scene.name + "': " + e.what()};
+    throw ui::UsageError{"scene '" + scene.name + "': " + app::userMessage(e)};
   }
   if (o.body && *o.body >= sessions_.front()->sim().bodies().size()) {
     throw ui::UsageError{"--body: body " + std::to_string(*o.body) +
@@ -141,9 +142,15 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
       break;
   }
   try {
-    goTo(o.ticks.front());
+    goTo(o.ticks.front(), true);
+    if (tick() < o.ticks.front()) {
+      throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) +
+                           ": the scene ends at tick " + std::to_string(tick())};
+    }
+  } catch (const ui::UsageError&) {
+    throw;
   } catch (const Error& e) {
-    throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) + ": " + e.what()};
+    throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) + ": " + app::userMessage(e)};
   }
 }
 
@@ -218,7 +225,7 @@ void Debugger::loadScene(const sim::SceneDef& scene) {
     build(scene, scene.defaults(), movers_, 0);
     message_.clear();
   } catch (const Error& e) {
-    reportError("scene '" + scene.name + "': " + e.what());
+    reportError("scene '" + scene.name + "': " + app::userMessage(e));
   }
 }
 
@@ -232,7 +239,7 @@ void Debugger::openFile(const std::string& path) {
     message_.clear();
     for (const std::string& note : file.notes()) reportError(note);
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
   }
 }
 
@@ -241,7 +248,7 @@ void Debugger::setMovers(std::vector<MoverSpec> movers) {
   try {
     build(*scene_, params_, std::move(movers), tick());
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
   }
 }
 
@@ -249,7 +256,8 @@ std::uint64_t Debugger::tick() const {
   return sessions_.front()->sim().ticks();
 }
 
-void Debugger::goTo(std::uint64_t t) {
+void Debugger::goTo(std::uint64_t t, bool stopAtEnd) {
+  notice_.clear();  // a notice tells of the tick it was given at ("the scene ended at tick 5")
   for (std::size_t k = 0; k < sessions_.size(); ++k) {
     ui::Session& s = *sessions_[k];
     sim::Simulation& sim = s.sim();
@@ -259,14 +267,33 @@ void Debugger::goTo(std::uint64_t t) {
     if (from < sim.oldestTick()) s.restart(params_, movers_[k]);
     sim.seek(from);
     s.select(selected_);  // the history starts afresh and is re-traced below
-    while (sim.ticks() < t) s.tick();
   }
-  furthest_ = std::max(furthest_, t);
+  // In step, so that with stopAtEnd they stop when every mover's scene has ended short of `t`
+  // (a mover that ended early otherwise runs on with the others).
+  const auto behind = [&] {
+    return std::any_of(sessions_.begin(), sessions_.end(),
+                       [&](const auto& s) { return s->sim().ticks() < t; });
+  };
+  const auto ended = [&] {
+    return std::all_of(sessions_.begin(), sessions_.end(),
+                       [](const auto& s) { return s->sim().finished(); });
+  };
+  const auto noneThere = [&] {
+    return std::none_of(sessions_.begin(), sessions_.end(),
+                        [&](const auto& s) { return s->sim().ticks() >= t; });
+  };
+  while (behind() && !(stopAtEnd && ended() && noneThere())) {
+    for (auto& s : sessions_) {
+      if (s->sim().ticks() < t) s->tick();
+    }
+  }
+  furthest_ = std::max(furthest_, tick());
   clock_ = 0.0;
 }
 
 void Debugger::stepOnce() {
   paused_ = true;
+  notice_.clear();
   for (auto& s : sessions_) s->tick();
   furthest_ = std::max(furthest_, tick());
 }
@@ -335,7 +362,7 @@ void Debugger::applyActions(const ui::Actions& a) {
   try {
     primary = parseMover(st.draftMover);
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
     return;
   }
   const bool tuned = primary.name() != movers_.front().name() ||
@@ -360,7 +387,7 @@ void Debugger::applyActions(const ui::Actions& a) {
     notice_.clear();
   } catch (const Error& e) {
     // Refused: the panel shows the values that run, with the reason beside them.
-    reportError(e.what());
+    reportError(app::userMessage(e));
     ui::syncDraft(st, *sessions_.front());
     st.error = message_;
   }
@@ -386,7 +413,7 @@ bool Debugger::tune(const std::string& param, double value) {
   try {
     st.draft.set(param, value);
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
     return false;
   }
   message_.clear();
@@ -411,8 +438,9 @@ void Debugger::run(Command c) {
                                      [](const auto& s) { return s->sim().finished(); });
       // Play on a scene that has ended plays it again, and says so, rather than pausing at once.
       if (paused_ && ended) {
-        notice_ = "the scene had ended at tick " + std::to_string(tick()) + ": playing again from 0";
+        const std::uint64_t end = tick();
         goTo(0);
+        notice_ = "the scene had ended at tick " + std::to_string(end) + ": playing again from 0";
       }
       paused_ = !paused_;
       clock_ = 0.0;
@@ -496,7 +524,7 @@ void Debugger::tryOpenRecording(const std::string& path) {
     (void)openRecording(path);
     message_.clear();
   } catch (const std::exception& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
   }
 }
 

@@ -87,7 +87,8 @@ class Debugger {
              std::uint64_t landOn);
   void loadScene(const sim::SceneDef& scene);
   void setMovers(std::vector<MoverSpec> movers);
-  void goTo(std::uint64_t t);
+  /// Runs to tick `t`; with `stopAtEnd`, no further than the end of a scene that ends first.
+  void goTo(std::uint64_t t, bool stopAtEnd = false);
   void stepOnce();
   void advance(double seconds);
   void select(std::optional<std::size_t> body);

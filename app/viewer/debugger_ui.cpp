@@ -19,6 +19,7 @@
 #include "debugger.hpp"
 #include "imgui.h"
 #include "timeline.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/layout.hpp"
 #include "tv/ui/palette.hpp"
@@ -616,7 +617,7 @@ void Debugger::useSubstepLength(double length) {
     build(*scene_, p, std::move(movers), tick());
     message_.clear();
   } catch (const Error& e) {
-    reportError(e.what());
+    reportError(app::userMessage(e));
   }
 }
 

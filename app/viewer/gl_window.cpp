@@ -60,6 +60,24 @@ void onGlfwError(int code, const char* text) {
   std::fprintf(stderr, "tv-debugger: GLFW error 0x%x: %s\n", static_cast<unsigned>(code), text);
 }
 
+// The default 1280x720 (scaled to the monitor) is larger than a 1024x640 screen: shrink the
+// window, its frame included, to the monitor's work area (the screen less the desktop's panels)
+// and put it at the area's corner, so that no part of it is off screen.
+void fitWorkArea(GLFWwindow* window) {
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (monitor == nullptr) return;
+  int ax = 0, ay = 0, aw = 0, ah = 0;
+  glfwGetMonitorWorkarea(monitor, &ax, &ay, &aw, &ah);
+  int left = 0, top = 0, right = 0, bottom = 0;
+  glfwGetWindowFrameSize(window, &left, &top, &right, &bottom);
+  int w = 0, h = 0;
+  glfwGetWindowSize(window, &w, &h);
+  const int maxW = aw - left - right, maxH = ah - top - bottom;
+  if (aw <= 0 || ah <= 0 || maxW <= 0 || maxH <= 0 || (w <= maxW && h <= maxH)) return;
+  glfwSetWindowSize(window, std::min(w, maxW), std::min(h, maxH));
+  glfwSetWindowPos(window, ax + left, ay + top);
+}
+
 }  // namespace
 
 GlWindow::GlWindow(const WindowConfig& config) {
@@ -80,6 +98,7 @@ GlWindow::GlWindow(const WindowConfig& config) {
     glfwTerminate();
     throw std::runtime_error("cannot create an OpenGL 3.3 core window");
   }
+  if (!config.exact) fitWorkArea(window_);
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(config.exact ? 0 : 1);
   dl_iterate_phdr(pinDriver, nullptr);

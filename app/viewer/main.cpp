@@ -14,6 +14,7 @@
 #include "imgui.h"
 #include "options.hpp"
 #include "settings.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
@@ -143,7 +144,7 @@ int interactive(const ViewerOptions& o) {
       try {
         m = parseMover(*o.recording->whatIf);
       } catch (const Error& e) {
-        throw ui::UsageError{std::string("--what-if: ") + e.what()};
+        throw ui::UsageError{std::string("--what-if: ") + app::userMessage(e)};
       }
       r.startWhatIf(m, o.recording->updatesAsMoves);
     }
@@ -232,7 +233,7 @@ int main(int argc, char** argv) {
     std::cerr << "tv-debugger: " << e.message << "\n(see tv-debugger --help)\n";
     return tv::viewer::kUsageExit;
   } catch (const std::exception& e) {
-    std::cerr << "tv-debugger: " << e.what() << "\n";
+    std::cerr << "tv-debugger: " << tv::app::userMessage(e) << "\n";
     return tv::viewer::kFailureExit;
   }
 }

@@ -9,6 +9,7 @@
 #include <GLFW/glfw3.h>
 
 #include "imgui.h"
+#include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/picture_options.hpp"
 #include "tv/ui/recording_still.hpp"
@@ -60,7 +61,7 @@ void RecordingDebugger::reopen(const std::string& path) {
     frameAll();
     validation_.start(path_, pinned_);
   } catch (const std::exception& e) {
-    report(e.what());
+    report(app::userMessage(e));
   }
 }
 
@@ -117,7 +118,7 @@ void RecordingDebugger::goTo(std::uint64_t f) {
     syncWhatIf();
   } catch (const std::exception& e) {
     paused_ = true;
-    report(e.what());
+    report(app::userMessage(e));
   }
 }
 
@@ -128,7 +129,7 @@ void RecordingDebugger::selectCall(std::optional<std::uint32_t> k) {
     state_.showTab = 0;
     syncWhatIf();
   } catch (const std::exception& e) {
-    report(e.what());
+    report(app::userMessage(e));
   }
 }
 
@@ -146,7 +147,7 @@ void RecordingDebugger::select(std::optional<ItemId> item) {
     session_->select(item);
     syncWhatIf();
   } catch (const std::exception& e) {
-    report(e.what());
+    report(app::userMessage(e));
   }
 }
 
@@ -238,7 +239,7 @@ void RecordingDebugger::startWhatIf(const MoverSpec& mover, bool updatesAsMoves)
     message_.clear();
   } catch (const std::exception& e) {
     whatIf_.reset();
-    report(e.what());
+    report(app::userMessage(e));
   }
 }
 

@@ -14,6 +14,7 @@
 #include "imgui.h"
 #include "recording_debugger.hpp"
 #include "timeline.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/ui/palette.hpp"
 
 namespace tv::viewer {
@@ -171,8 +172,18 @@ void RecordingDebugger::drawTimeline(ImVec2 display, float h) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f);
   float speed = static_cast<float>(speed_);
-  if (ImGui::SliderFloat("##speed", &speed, 0.25f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
-    speed_ = static_cast<double>(speed);
+  if (ImGui::SliderFloat("##speed", &speed, 0.25f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
+    // A typed rate is not clamped by the slider: one outside 0.25x..4x (a negative one left the
+    // player stuck "playing") is refused and the rate stays.
+    if (std::isfinite(speed) && speed >= 0.25f && speed <= 4.0f) {
+      speed_ = static_cast<double>(speed);
+    } else {
+      char why[96];
+      std::snprintf(why, sizeof why, "playback rate %gx refused: it is 0.25x to 4x",
+                    static_cast<double>(speed));
+      message_ = why;
+    }
+  }
   ImGui::SameLine();
   ImGui::Text("frame %" PRIu64 " (0..%" PRIu64 ")", frame, session_->lastFrame());
 
@@ -201,7 +212,16 @@ void RecordingDebugger::drawTimeline(ImVec2 display, float h) {
       selectCall(divergence->call);
     }
   } else if (validation_.done()) {
-    ImGui::TextColored(colour(pal::kGood), "|  valid: the replay matches the recording");
+    const ReplaySummary& summary = session_->replay().summary();
+    if (summary.damagedAt) {
+      // Only what could be read was checked: not a verdict on the whole file.
+      ImGui::TextColored(colour(pal::kBad),
+                         "|  the file is cut or damaged at byte %" PRIu64
+                         ": only frames 0..%" PRIu64 " were checked, and they match",
+                         *summary.damagedAt, summary.frames - 1);
+    } else {
+      ImGui::TextColored(colour(pal::kGood), "|  valid: the replay matches the recording");
+    }
   }
   std::optional<std::uint64_t> implausible;
   if (whatIf_) {
@@ -473,7 +493,7 @@ void RecordingDebugger::drawWhatIfControls() {
       if (substep) m.maxStep = draftSubstep_;
       startWhatIf(m, draftUpdates_);
     } catch (const std::exception& e) {
-      report(e.what());
+      report(app::userMessage(e));
     }
   }
   ImGui::SameLine();
@@ -511,6 +531,7 @@ void RecordingDebugger::drawHelp() {
   };
   ImGui::SetNextWindowSize({560, 0}, ImGuiCond_Always);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
+  ImGui::SetNextWindowBgAlpha(1.0f);  // over the views: nothing beneath may show through
   if (ImGui::Begin("Help: recordings", &showHelp_,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     if (ImGui::BeginTable("keys", 2)) {

@@ -2,6 +2,8 @@
 
 #include <exception>
 
+#include "tv/app/user_message.hpp"
+
 namespace tv::viewer {
 
 // -- validation --------------------------------------------------------------------------------
@@ -48,7 +50,7 @@ void ValidationJob::run(const std::string& path) {
     cancelled = replay.cancelled();
     if (!cancelled) progress_ = replay.frames();
   } catch (const std::exception& e) {
-    error = e.what();
+    error = app::userMessage(e);
   }
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -98,7 +100,7 @@ void WhatIfJob::start(const std::string& path, const ReplayOptions& options, dou
       Replay replay = Replay::open(path, options);
       report = replay.whatIf(farAway);
     } catch (const std::exception& e) {
-      error = e.what();
+      error = app::userMessage(e);
     }
     {
       const std::lock_guard<std::mutex> lock(mutex_);

@@ -55,6 +55,7 @@ void drawHelp(bool* open, ImVec2 pos, ImVec2 size) {
   // Over the column of controls, beside the world: the picture it explains stays in view.
   ImGui::SetNextWindowPos(pos, ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(size, ImGuiCond_Appearing);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // over the panel: its labels must not show through
   if (!ImGui::Begin("Help (F1)", open, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;

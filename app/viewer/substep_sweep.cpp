@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "imgui.h"
+#include "tv/app/user_message.hpp"
 #include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/sim/simulation.hpp"
@@ -58,7 +59,7 @@ void SubstepSweep::reset(const sim::SceneDef& scene, const sim::Params& params, 
     sim::Simulation exact(scene, params, parseMover("continuous"));
     exact_ = positionsAfter(exact, ticks_);
   } catch (const Error& e) {
-    error_ = e.what();
+    error_ = app::userMessage(e);
     lengths_.clear();
   }
 }
@@ -88,7 +89,7 @@ bool SubstepSweep::advance() {
     }
     p.error = at.empty() ? 0.0 : sum / static_cast<double>(at.size());
   } catch (const Error& e) {
-    error_ = e.what();
+    error_ = app::userMessage(e);
   }
   points_.push_back(p);
   return true;

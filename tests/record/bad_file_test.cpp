@@ -8,6 +8,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -171,6 +172,10 @@ TEST(BadFile, ABadChunkChecksumNamesTheChunkAndFrame) {
   ASSERT_FALSE(r.warnings().empty());
   EXPECT_NE(r.warnings()[0].find("checksum mismatch"), std::string::npos);
   EXPECT_FALSE(r.validate());
+  // A check of it covers frames 0..1 only, and the summary says where the damage is.
+  EXPECT_EQ(r.summary().damagedAt, std::optional<std::uint64_t>(chunks[2]));
+  EXPECT_EQ(r.summary().bytesRead, chunks[2]);
+  EXPECT_FALSE(tv::Replay::fromBytes(sample()).summary().damagedAt);  // the whole file
 }
 
 TEST(BadFile, ATruncatedFileReplaysUpToItsLastWholeFrameWithAWarning) {
@@ -184,12 +189,14 @@ TEST(BadFile, ATruncatedFileReplaysUpToItsLastWholeFrameWithAWarning) {
   EXPECT_NE(r.warnings()[0].find("frame 5"), std::string::npos) << r.warnings()[0];
   EXPECT_NE(r.warnings()[0].find("is cut"), std::string::npos) << r.warnings()[0];
   EXPECT_FALSE(r.validate());
+  EXPECT_EQ(r.summary().damagedAt, std::optional<std::uint64_t>(chunks[5]));
   // Cut between chunks: no end mark, whole frames.
   const Bytes between(whole.begin(), whole.begin() + static_cast<std::ptrdiff_t>(chunks[5]));
   tv::Replay b = tv::Replay::fromBytes(between);
   EXPECT_EQ(b.frames(), 5u);
   ASSERT_EQ(b.warnings().size(), 1u);
   EXPECT_NE(b.warnings()[0].find("no end mark"), std::string::npos);
+  EXPECT_FALSE(b.summary().damagedAt);  // nothing damaged: the game stopped without closing it
   // Nothing whole at all.
   const Bytes headerOnly(whole.begin(), whole.begin() + 32 + 5);
   EXPECT_ERROR(headerOnly, "no whole frame");

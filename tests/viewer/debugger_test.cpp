@@ -279,6 +279,20 @@ TEST_F(DebuggerDriver, PlayOnAnEndedScenePlaysItAgainAndSaysSo) {
   EXPECT_NE(dbg().notice().find("playing again"), std::string::npos) << dbg().notice();
 }
 
+TEST_F(DebuggerDriver, SteppingBackFromTheEndNoLongerSaysTheSceneEnded) {
+  open({"--scene", "bullets-wall", "--mover", "continuous", "--tick", "1"});
+  dbg().command(Command::pause);  // play to the end, where it stops and says so
+  for (int i = 0; i < 2000 && !dbg().paused(); ++i) frame();
+  ASSERT_NE(dbg().notice().find("ended at tick"), std::string::npos) << dbg().notice();
+  dbg().command(Command::pause);  // plays again from 0, and says so
+  EXPECT_NE(dbg().notice().find("playing again"), std::string::npos) << dbg().notice();
+  for (int i = 0; i < 2000 && !dbg().paused(); ++i) frame();
+  ASSERT_NE(dbg().notice().find("ended at tick"), std::string::npos) << dbg().notice();
+  dbg().command(Command::stepBack);  // before the end: it has not ended there
+  frames(2);
+  EXPECT_EQ(dbg().notice().find("ended"), std::string::npos) << dbg().notice();
+}
+
 TEST_F(DebuggerDriver, TunedParametersAreSavedWithTheSettings) {
   open({"--scene", "bullets-wall", "--mover", "substep-discrete", "--tick", "1"});
   ASSERT_TRUE(dbg().tune("substep", 4.0));

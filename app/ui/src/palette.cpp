@@ -45,6 +45,9 @@ void applyStyle(ImGuiStyle& style) {
   style.ItemSpacing = {8.0f, 3.0f};
   style.CellPadding = {4.0f, 1.0f};
   style.WindowPadding = {8.0f, 6.0f};
+  // Menus, combo lists and tooltips open over the panels: see-through, the labels beneath read
+  // through their items.
+  style.Colors[ImGuiCol_PopupBg].w = 1.0f;
 }
 
 }  // namespace tv::ui

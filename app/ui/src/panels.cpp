@@ -1,4 +1,5 @@
 // The panels: controls, inspector, counters, HUD and legend, as ImGui widget contents.
+#include "tv/app/user_message.hpp"
 #include "tv/ui/panels.hpp"
 
 #include <cfloat>
@@ -70,13 +71,19 @@ void rowLabel(const char* text) {
 }
 
 // Applies an edit through Params::set, which validates; a rejected value is reported, not
-// clamped.
-void setDraft(DebuggerState& st, const std::string& name, double v) {
+// clamped, and changes nothing: the parameter goes back to the value that runs. A typed value
+// arrives keystroke by keystroke ("1", "1e", "1e9"), so the draft must not keep the "1".
+void setDraft(DebuggerState& st, const Session& session, const std::string& name, double v) {
   try {
     st.draft.set(name, v);
     st.error.clear();
   } catch (const Error& e) {
-    st.error = e.what();
+    st.error = app::userMessage(e);
+    const sim::SceneDef* scene = sim::builtinScenes().tryFind(st.draftScene);
+    const sim::Params running = st.draftScene == session.sim().scene().name || scene == nullptr
+                                    ? session.sim().params()
+                                    : scene->defaults();
+    st.draft.set(name, running.get(name));
   }
 }
 
@@ -132,11 +139,11 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
         // Dragging snaps; a value typed with Ctrl+click is taken exactly.
         const bool dragging = ImGui::IsMouseDown(ImGuiMouseButton_Left);
         if (dragging) v = snapped(v, ImGui::GetIO().KeyShift, spec.integer);
-        setDraft(st, spec.name, v);
+        setDraft(st, session, spec.name, v);
         // Live while the slider moves when a re-run to this tick is cheap; else on release.
         if (dragging && st.lastRerunMs < kLiveRerunMs) a.restart = true;
       }
-      if (ImGui::IsItemDeactivatedAfterEdit()) a.restart = true;
+      if (ImGui::IsItemDeactivatedAfterEdit() && st.error.empty()) a.restart = true;
       if (ImGui::IsItemActive() && st.lastRerunMs >= kLiveRerunMs) {
         ImGui::SetTooltip("re-runs on release (the last re-run took %.0f ms)", st.lastRerunMs);
       } else if (ImGui::IsItemHovered()) {
@@ -145,13 +152,44 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
       }
     }
     rowLabel("render rate (Hz)");
+    // Dragging stays within 0..1000 but a typed value does not: refuse one outside, as
+    // tv-render --render-hz does, and keep the rate.
     const double lo = 0.0, hi = 1000.0;
-    ImGui::DragScalar("##render", ImGuiDataType_Double, &st.renderHz, 1.0f, &lo, &hi, "%.0f");
+    double hz = st.renderHz;
+    const bool edited = ImGui::DragScalar("##render", ImGuiDataType_Double, &hz, 1.0f, &lo, &hi,
+                                          "%.0f");
+    // Typed keystroke by keystroke ("1", "1e", "1e9"): a refusal goes back to the rate before
+    // the edit, not to the "1".
+    ImGuiStorage* storage = ImGui::GetStateStorage();
+    const ImGuiID before = ImGui::GetID("##render-before");
+    if (ImGui::IsItemActivated()) storage->SetFloat(before, static_cast<float>(st.renderHz));
+    if (edited) {
+      if (std::isfinite(hz) && hz >= lo && hz <= hi) {
+        st.renderHz = hz;
+        st.error.clear();
+      } else {
+        st.error = "render rate " + formatNumber(hz) + " Hz refused: it is 0 (none) to 1000 Hz";
+        st.renderHz =
+            static_cast<double>(storage->GetFloat(before, static_cast<float>(st.renderHz)));
+      }
+    }
     rowLabel("traced body");
-    int body = session.selected() ? static_cast<int>(*session.selected()) : -1;
-    if (ImGui::InputInt("##body", &body) && body >= 0 &&
-        static_cast<std::size_t>(body) < session.sim().bodies().size()) {
-      a.select = static_cast<std::size_t>(body);
+    // Typed as a number, so that 1e9 is read as 1e9 (an integer field kept the digits: 19).
+    const std::size_t bodies = session.sim().bodies().size();
+    double body = session.selected() ? static_cast<double>(*session.selected()) : -1.0;
+    const double one = 1.0;
+    if (ImGui::InputScalar("##body", ImGuiDataType_Double, &body, &one, nullptr, "%.0f",
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
+      if (body == -1.0) {
+        st.error.clear();
+      } else if (std::isfinite(body) && body >= 0.0 && body == std::floor(body) &&
+                 body < static_cast<double>(bodies)) {
+        a.select = static_cast<std::size_t>(body);
+        st.error.clear();
+      } else {
+        st.error = "traced body " + formatNumber(body) + " refused: the scene has " +
+                   std::to_string(bodies) + " bodies, 0.." + std::to_string(bodies - 1);
+      }
     }
     ImGui::EndTable();
   }
@@ -233,8 +271,9 @@ void inspectorContents(const Session& session) {
                     c.normal.x + 0.0, c.normal.y + 0.0, response.c_str(),
                     c.corner ? " (corner)" : "");
         ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kDim));
-        ImGui::TextWrapped("   touch (%.3f, %.3f)  %s (%.3f, %.3f)", c.touch.x, c.touch.y,
-                           "target", c.target.x, c.target.y);
+        // One point a line, unwrapped: ImGui wraps after a '.', which split "87.000" in two.
+        ImGui::Text("   touch (%.3f, %.3f)", c.touch.x, c.touch.y);
+        ImGui::Text("   target (%.3f, %.3f)", c.target.x, c.target.y);
         ImGui::PopStyleColor();
       }
       ImGui::TreePop();
@@ -288,7 +327,8 @@ void countersContents(const Session& session) {
       ImGui::Text("%zu last, %.2f mean", moves.empty() ? 0 : moves.back().trace.candidates.size(),
                   static_cast<double>(t.candidates) / static_cast<double>(t.moves));
     } else {
-      ImGui::TextColored(colour(pal::kDim), "(no traced body)");
+      // A traced body that has not moved yet is not "no traced body".
+      ImGui::TextColored(colour(pal::kDim), session.selected() ? "(no move yet)" : "(no traced body)");
     }
     ImGui::TableNextRow();
     ImGui::TableNextColumn();

@@ -2,7 +2,9 @@
 #include "tv/ui/picture_options.hpp"
 
 #include "tv/app/flags.hpp"
+#include "tv/app/missing_value.hpp"
 #include "tv/app/vocabulary.hpp"
+#include "tv/app/work_limit.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -31,6 +33,16 @@ std::vector<std::string> splitList(std::string_view flag, std::string_view text)
 
 std::uint64_t parseTick(std::string_view flag, std::string_view text) {
   return app::parseWhole<UsageError>(flag, text);
+}
+
+// A tick to open at: within the work limit, so that a scene that never ends cannot hang the tool.
+std::uint64_t parseOpeningTick(std::string_view flag, std::string_view text) {
+  const std::uint64_t t = parseTick(flag, text);
+  if (t > app::kMaxTicks) {
+    throw UsageError{"--" + std::string(flag) + " " + std::to_string(t) +
+                     ": beyond the work limit of " + std::to_string(app::kMaxTicks) + " ticks"};
+  }
+  return t;
 }
 
 double parseReal(std::string_view flag, std::string_view text) {
@@ -107,7 +119,10 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
     } else {
       // A flag in the value's place means the value was forgotten.
       if (i + 1 >= argc || std::string_view(argv[i + 1]).substr(0, 2) == "--") {
-        throw UsageError{"--" + name + " needs a value"};
+        app::refuseMissingValue<UsageError>(
+            name, {"map", "scene-file", "solid-layer", "scene", "mover", "compare", "tick", "ticks",
+                   "window", "out", "body", "view", "render-hz", "frames", "caption", "hide",
+                   "show"});
       }
       value = argv[++i];
     }
@@ -132,12 +147,12 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       }
     } else if (name == "tick") {
       if (o.tickGiven) throw UsageError{"--tick: the tick was already given (by --tick or --ticks)"};
-      o.ticks = {parseTick(name, value)};
+      o.ticks = {parseOpeningTick(name, value)};
       o.tickGiven = true;
     } else if (name == "ticks") {
       if (o.tickGiven) throw UsageError{"--ticks: the tick was already given (by --tick or --ticks)"};
       o.ticks.clear();
-      for (const std::string& t : splitList(name, value)) o.ticks.push_back(parseTick(name, t));
+      for (const std::string& t : splitList(name, value)) o.ticks.push_back(parseOpeningTick(name, t));
       std::sort(o.ticks.begin(), o.ticks.end());
       o.ticks.erase(std::unique(o.ticks.begin(), o.ticks.end()), o.ticks.end());
       o.tickGiven = true;

@@ -75,17 +75,19 @@ void Session::noteFailure() {
   }
 }
 
-void Session::advanceTo(std::uint64_t t, double renderHz) {
+void Session::advanceTo(std::uint64_t t, double renderHz, bool stopAtEnd) {
   if (t < sim_.ticks()) {
     fail(kWhere, "tick " + std::to_string(t) + " is behind the current tick " +
                      std::to_string(sim_.ticks()) + " (ticks must be in increasing order)");
   }
+  // With stopAtEnd, a scene that has ended goes no further: nothing happens after its end.
+  const auto more = [&] { return sim_.ticks() < t && !(stopAtEnd && sim_.finished()); };
   if (renderHz <= 0.0) {
-    while (sim_.ticks() < t) tick();
+    while (more()) tick();
     return;
   }
   const double frameTime = 1.0 / renderHz;
-  while (sim_.ticks() < t) {
+  while (more()) {
     frame(frameTime);
     if (sim_.ticks() > t) {
       fail(kWhere, "a render rate of " + formatNumber(renderHz) +

@@ -1,4 +1,5 @@
 // The still picture shared by tv-render and tv-debugger's screenshot mode.
+#include "tv/app/user_message.hpp"
 #include "tv/ui/still.hpp"
 
 #include <algorithm>
@@ -76,7 +77,7 @@ sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o) {
     try {
       p.set(name, v);
     } catch (const Error& e) {
-      throw UsageError{flag + " " + text + ": " + e.what()};
+      throw UsageError{flag + " " + text + ": " + app::userMessage(e)};
     }
   }
   return p;
@@ -127,12 +128,12 @@ Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
     try {
       spec = parseMover(m);
     } catch (const Error& e) {
-      throw UsageError{std::string(o.compare ? "--compare" : "--mover") + ": " + e.what()};
+      throw UsageError{std::string(o.compare ? "--compare" : "--mover") + ": " + app::userMessage(e)};
     }
     try {
       sessions_.push_back(std::make_unique<Session>(*scene_, params, spec, std::nullopt));
     } catch (const Error& e) {
-      throw UsageError{"scene '" + scene_->name + "': " + e.what()};
+      throw UsageError{"scene '" + scene_->name + "': " + app::userMessage(e)};
     }
     const sim::Simulation& sim = sessions_.back()->sim();
     if (auto why = app::workLimitExceeded(params, sim.moverSpec(), sim.bodies().size()))
@@ -140,19 +141,30 @@ Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
     try {
       sessions_.back()->select(o.body);
     } catch (const Error& e) {
-      throw UsageError{"--body: " + std::string(e.what())};
+      throw UsageError{"--body: " + app::userMessage(e)};
     }
   }
   for (auto& s : sessions_) raw_.push_back(s.get());
 }
 
 void Still::advanceTo(std::uint64_t tick) {
-  for (auto& s : sessions_) {
-    try {
-      s->advanceTo(tick, o_.renderHz);
-    } catch (const Error& e) {
-      throw UsageError{"--tick " + std::to_string(tick) + ": " + e.what()};
+  try {
+    // First as far as the scene goes: a tick after every mover's end is refused, not run for
+    // ever; a mover that ended early then runs on to the tick the others reach.
+    std::uint64_t reached = 0;
+    for (auto& s : sessions_) {
+      s->advanceTo(tick, o_.renderHz, true);
+      reached = std::max(reached, s->sim().ticks());
     }
+    if (reached < tick) {
+      throw UsageError{"--tick " + std::to_string(tick) + ": the scene ends at tick " +
+                       std::to_string(reached)};
+    }
+    for (auto& s : sessions_) s->advanceTo(tick, o_.renderHz);
+  } catch (const UsageError&) {
+    throw;
+  } catch (const Error& e) {
+    throw UsageError{"--tick " + std::to_string(tick) + ": " + app::userMessage(e)};
   }
 }
 

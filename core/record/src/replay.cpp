@@ -18,6 +18,16 @@
 
 namespace tv {
 
+namespace {
+// A frame's time for a person: 1/60 s reads 0.0166667, not 0.016666666666666666 (the value
+// that reads back exactly belongs in the file, not in a summary line).
+std::string readableSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", s);
+  return text;
+}
+}  // namespace
+
 std::string_view callKindName(CallKind k) {
   switch (k) {
     case CallKind::add:
@@ -127,6 +137,7 @@ void Replay::Impl::index() {
                          " is cut (" + std::to_string(size - pos) +
                          " bytes of its chunk header): replaying up to frame " +
                          std::to_string(f == 0 ? 0 : f - 1));
+      summary.damagedAt = pos;
       break;
     }
     const std::uint32_t len = le32(bytes.data() + pos), crc = le32(bytes.data() + pos + 4);
@@ -145,12 +156,14 @@ void Replay::Impl::index() {
                            " is cut (" + std::to_string(size - pos - 8) + " of its " +
                            std::to_string(len) + " bytes): replaying up to frame " +
                            std::to_string(f == 0 ? 0 : f - 1));
+        summary.damagedAt = pos;
         break;
       }
       const std::string what = "chunk length " + std::to_string(len) + " is over the 2^30 limit";
       if (!options.tolerant) fileFail(pos, f, what);
       warnings.push_back("byte " + std::to_string(pos) + " (frame " + std::to_string(f) +
                          "): " + what + "; stopped there");
+      summary.damagedAt = pos;
       break;
     }
     const std::uint8_t* payload = bytes.data() + pos + 8;
@@ -158,6 +171,7 @@ void Replay::Impl::index() {
       const std::string what = "checksum mismatch in frame " + std::to_string(f) + "'s chunk";
       if (!options.tolerant) fileFail(pos, f, what);
       warnings.push_back("byte " + std::to_string(pos) + ": " + what + "; stopped there");
+      summary.damagedAt = pos;
       break;
     }
     FrameInfo info;
@@ -187,11 +201,13 @@ void Replay::Impl::index() {
     } catch (const Error& e) {
       if (!options.tolerant) throw;
       warnings.push_back(std::string(e.what()) + "; stopped before that frame");
+      summary.damagedAt = pos;
       break;
     }
     frames.push_back(info);
     pos += 8 + len;
   }
+  summary.bytesRead = pos;
   if (!ended && (warnings.empty())) {
     warnings.push_back("the recording has no end mark: the game stopped without closing it");
   }
@@ -481,7 +497,7 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
                            (c.category.empty() ? "" : " (" + c.category + ")");
             break;
           case CallKind::advance:
-            info.summary = "advance " + formatNumber(c.frameTime) +
+            info.summary = "advance " + readableSeconds(c.frameTime) +
                            " s: " + std::to_string(c.ticks) + " ticks";
             break;
         }

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -25,6 +26,10 @@ namespace tv::app {
 
 /// Estimated seconds of work per tick above which a run is refused.
 inline constexpr double kMaxSecondsPerTick = 1.0;
+
+/// The latest tick a still or the debugger is asked to open at: a scene that never ends would
+/// otherwise run for ever on --tick 99999999. A million ticks is over four hours at 60 Hz.
+inline constexpr std::uint64_t kMaxTicks = 1'000'000;
 
 struct TickWork {
   double units = 0.0;    ///< per move: pieces, pixels or cells

@@ -35,7 +35,8 @@ class Session {
   /// game at that refresh rate would draw it; with 0 it ticks (and draws at the physics state).
   /// Throws tv::Error when `t` is behind the current tick, or when frames at `renderHz` run
   /// more than one tick at a time and step over `t` (the session has then advanced past `t`).
-  void advanceTo(std::uint64_t t, double renderHz);
+  /// With `stopAtEnd` it stops early at the end of a scene that ends before `t`.
+  void advanceTo(std::uint64_t t, double renderHz, bool stopAtEnd = false);
   /// Back to tick 0, with new parameters and mover (nothing changes on a throw).
   void restart(const sim::Params& params, MoverSpec mover);
 

@@ -93,6 +93,10 @@ struct ReplayOptions {
 struct ReplaySummary {
   std::uint64_t frames = 0, calls = 0, moves = 0, collisions = 0, queries = 0, keyframes = 0;
   std::uint64_t bytes = 0;  ///< file size
+  /// Bytes of whole frames read (header included): less than `bytes` when the file is damaged.
+  std::uint64_t bytesRead = 0;
+  /// Where a cut or damaged file stopped being read: frames after it are not in the replay.
+  std::optional<std::uint64_t> damagedAt;
 };
 
 /// A move whose what-if outcome differs from the recorded one.
