@@ -7,6 +7,7 @@
 #include <initializer_list>
 
 #include "tv/ui/palette.hpp"
+#include "windows.hpp"
 
 namespace tv::ui {
 
@@ -14,13 +15,11 @@ namespace pal = palette;
 
 namespace {
 
-constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                    ImGuiWindowFlags_NoFocusOnAppearing;
-constexpr ImGuiWindowFlags kOverlay = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                      ImGuiWindowFlags_NoSavedSettings |
-                                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
-constexpr float kMargin = 8.0f;
+using detail::beginCanvas;
+using detail::kFixed;
+using detail::kMargin;
+using detail::kOverlay;
+using detail::place;
 
 struct Failure {
   const char* label;
@@ -32,22 +31,6 @@ constexpr Failure kFailures[] = {
     {"misses", &sim::Counters::misses},
 };
 
-void place(ImVec2 pos, ImVec2 size, ImVec2 pivot = {0, 0}) {
-  ImGui::SetNextWindowPos(pos, ImGuiCond_Always, pivot);
-  ImGui::SetNextWindowSize(size, ImGuiCond_Always);
-}
-
-// A borderless window that only hosts a world view.
-bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size) {
-  place(pos, size);
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
-  const bool open = ImGui::Begin(
-      name, nullptr,
-      kOverlay | ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
-  ImGui::PopStyleVar(2);
-  return open;
-}
 
 // Puts the next item on this line when `text` fits there, else on the next line.
 void sameLineIfFits(const char* text) {
@@ -163,14 +146,7 @@ Actions debuggerLayout(Session& session, DebuggerState& st, ImVec2 origin, ImVec
   }
   ImGui::End();
 
-  ImGui::SetNextWindowBgAlpha(0.82f);
-  ImGui::SetNextWindowPos({x0 + kMargin, y0 + display.y - kMargin}, ImGuiCond_Always, {0, 1});
-  ImGui::SetNextWindowSize({worldW - 2 * kMargin, 0}, ImGuiCond_Always);
-  if (ImGui::Begin("Legend", nullptr, kOverlay)) {
-    legendContents(4);
-    st.coveredBottom = y0 + display.y - ImGui::GetWindowPos().y + kMargin;
-  }
-  ImGui::End();
+  st.coveredBottom = detail::legendOverlay({x0, y0}, {worldW, display.y}, 4);
 
   float y = 0.0f;
   ImGui::SetNextWindowPos({x0 + worldW, y0 + y}, ImGuiCond_Always);
@@ -338,5 +314,37 @@ std::optional<PanelPick> comparisonLayout(std::span<Session* const> sessions,
   }
   return picked;
 }
+
+namespace detail {
+
+void place(ImVec2 pos, ImVec2 size, ImVec2 pivot) {
+  ImGui::SetNextWindowPos(pos, ImGuiCond_Always, pivot);
+  ImGui::SetNextWindowSize(size, ImGuiCond_Always);
+}
+
+bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size) {
+  place(pos, size);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  const bool open = ImGui::Begin(
+      name, nullptr,
+      kOverlay | ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
+  ImGui::PopStyleVar(2);
+  return open;
+}
+
+float legendOverlay(ImVec2 origin, ImVec2 size, int columns) {
+  ImGui::SetNextWindowBgAlpha(0.82f);
+  place({origin.x + kMargin, origin.y + size.y - kMargin}, {size.x - 2 * kMargin, 0}, {0, 1});
+  float covered = 0.0f;
+  if (ImGui::Begin("Legend", nullptr, kOverlay)) {
+    legendContents(columns);
+    covered = origin.y + size.y - ImGui::GetWindowPos().y + kMargin;
+  }
+  ImGui::End();
+  return covered;
+}
+
+}  // namespace detail
 
 }  // namespace tv::ui

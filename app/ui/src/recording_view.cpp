@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "draw_util.hpp"
+#include "windows.hpp"
 #include "tv/ui/palette.hpp"
 
 namespace tv::ui {
@@ -23,13 +24,11 @@ namespace pal = palette;
 
 namespace {
 
-constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                    ImGuiWindowFlags_NoFocusOnAppearing;
-constexpr ImGuiWindowFlags kOverlay = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                      ImGuiWindowFlags_NoSavedSettings |
-                                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
-constexpr float kMargin = 8.0f;
+using detail::beginCanvas;
+using detail::kFixed;
+using detail::kMargin;
+using detail::kOverlay;
+using detail::place;
 
 ImVec4 colour(ImU32 c) {
   return ImGui::ColorConvertU32ToFloat4(c);
@@ -50,11 +49,6 @@ std::string responseText(const World& world, ResponseId r) {
   } catch (const std::exception&) {
     return "response " + std::to_string(r);
   }
-}
-
-void place(ImVec2 pos, ImVec2 size) {
-  ImGui::SetNextWindowPos(pos, ImGuiCond_Always);
-  ImGui::SetNextWindowSize(size, ImGuiCond_Always);
 }
 
 }  // namespace
@@ -395,14 +389,7 @@ RecordingActions recordingLayout(RecordingSession& s, RecordingViewState& st, Im
   RecordingActions a;
   DebuggerState& view = st.view;
 
-  place({x0, y0}, {worldW, display.y});
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
-  const bool open = ImGui::Begin(
-      "World", nullptr,
-      kOverlay | ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoScrollWithMouse);
-  ImGui::PopStyleVar(2);
-  if (open) {
+  if (beginCanvas("World", {x0, y0}, {worldW, display.y})) {
     if (auto pick = recordingWorldView("##world", s, view, {worldW, display.y})) a.item = *pick;
   }
   ImGui::End();
@@ -415,14 +402,8 @@ RecordingActions recordingLayout(RecordingSession& s, RecordingViewState& st, Im
   }
   ImGui::End();
 
-  ImGui::SetNextWindowBgAlpha(0.82f);
-  ImGui::SetNextWindowPos({x0 + kMargin, y0 + display.y - kMargin}, ImGuiCond_Always, {0, 1});
-  ImGui::SetNextWindowSize({worldW - 2 * kMargin, 0}, ImGuiCond_Always);
-  if (ImGui::Begin("Legend", nullptr, kOverlay)) {
-    legendContents(worldW > 700.0f ? 4 : 3);
-    view.coveredBottom = y0 + display.y - ImGui::GetWindowPos().y + kMargin;
-  }
-  ImGui::End();
+  view.coveredBottom =
+      detail::legendOverlay({x0, y0}, {worldW, display.y}, worldW > 700.0f ? 4 : 3);
 
   // The calls take the top third of the column; the inspector or the outliner the rest.
   const float callsH = std::floor(std::clamp(display.y * 0.34f, 120.0f, 260.0f));
