@@ -12,29 +12,14 @@
 #include <map>
 #include <vector>
 
+#include "tv/sim/rng.hpp"
 #include "tv/trace.hpp"
 #include "tv/world.hpp"
 
 namespace tv::detail {
 namespace {
 
-// SplitMix64: the same scenes on every standard library.
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : s_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  std::uint64_t below(std::uint64_t n) { return next() % n; }
-
- private:
-  std::uint64_t s_;
-};
+using Rng = sim::Rng;  // the scenes' SplitMix64: the same scenes on every standard library
 
 std::vector<std::uint32_t> slotsIn(const SpatialHash& h, Cell c) {
   std::vector<std::uint32_t> v;
