@@ -32,6 +32,8 @@ class Table {
 
 /// Fixed decimals ("12.35").
 [[nodiscard]] std::string fixed(double v, int decimals);
+/// Sixteen hex digits ("00ff12…"), for hashes.
+[[nodiscard]] std::string hex(std::uint64_t v);
 /// A percentage with one decimal ("38.2%").
 [[nodiscard]] std::string percent(double part, double whole);
 /// Three significant digits, plain or with an exponent when tiny ("0.0123", "1.2e-13", "0").

@@ -264,6 +264,7 @@ struct BumpRow {
   double cell;
   CrowdFilter filter;
   double ms, instructions, bytes;  // instructions per move: < 0 when the counter is unavailable
+  std::uint64_t hash = 0;           // the crowd's state at the end of the run
 };
 
 BumpRow bumpRow(std::int64_t n, double cell, CrowdFilter filter, std::uint64_t seed,
@@ -280,6 +281,7 @@ BumpRow bumpRow(std::int64_t n, double cell, CrowdFilter filter, std::uint64_t s
     row.instructions = static_cast<double>(counter.read() - before) /
                        static_cast<double>(ticks * static_cast<std::uint64_t>(n));
   }
+  row.hash = crowd.stateHash();
   return row;
 }
 
@@ -331,6 +333,9 @@ void runBumpCrowd(const Options& o, int repeats, std::ostream& os) {
         "does not expose it — `valgrind --tool=callgrind` gives the same figure); bytes per item "
         "is the world's heap over its items (tiles + movers), right after it was filled.\n\n";
   Table table({"N:", "cell:", "filter", "ms/tick:", "ns/move:", "instr/move:", "bytes/item:"});
+  // The crowd's state at the end of each row's run (the same flags run the same ticks): a change
+  // that must keep every result bit for bit leaves this file as it was.
+  Table hashes({"N:", "cell:", "filter", "state hash"});
   std::vector<BumpRow> rows;
   Progress progress("scale bump-crowd", counts.size() * cells.size() * filters.size());
   for (const std::int64_t n : counts) {
@@ -341,12 +346,14 @@ void runBumpCrowd(const Options& o, int repeats, std::ostream& os) {
         table.add({std::to_string(n), fixed(cell, 0), filterName(f), fixed(r.ms, 3),
                    fixed(r.ms * 1e6 / static_cast<double>(n), 0),
                    r.instructions < 0 ? "n/a" : fixed(r.instructions, 0), fixed(r.bytes, 0)});
+        hashes.add({std::to_string(n), fixed(cell, 0), filterName(f), hex(r.hash)});
         progress.step(std::to_string(n) + " cell " + fixed(cell, 0) + " " + filterName(f));
       }
     }
   }
   table.printMarkdown(os);
   table.writeCsv(o.out, "scale_bump_crowd.csv");
+  hashes.writeCsv(o.out, "scale_bump_crowd_hashes.csv");
   // Targets, at the best cell size for each N.
   const auto best = [&](std::int64_t n, CrowdFilter f) -> const BumpRow* {
     const BumpRow* b = nullptr;
