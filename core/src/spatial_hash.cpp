@@ -57,8 +57,12 @@ void SpatialHash::update(std::uint32_t slot, const Rect& r) {
   Registration& g = regs_[slot];
   const CellRange cells = grid_.cellsHolding(r);
   if (cells != g.cells) {
-    drop(slot);
-    add(slot, r, cells);
+    if (g.cached() && cells.count() <= static_cast<std::int64_t>(kCachedCells)) {
+      shift(slot, r, cells);
+    } else {
+      drop(slot);
+      add(slot, r, cells);
+    }
     return;
   }
   if (g.cached()) {
@@ -97,6 +101,53 @@ void SpatialHash::add(std::uint32_t slot, const Rect& r, const CellRange& cells)
   });
 }
 
+// A small item that moves into other cells keeps its entries in the cells it stays in (they only
+// get the new rect) and leaves and enters only the cells at the edges: a mover crossing a cell
+// line touches one or two cells, not all of them twice.
+void SpatialHash::shift(std::uint32_t slot, const Rect& r, const CellRange& cells) {
+  Registration& g = regs_[slot];
+  const std::uint32_t tag = slot | (cells.count() > 1 ? HashEntry::kShared : 0u);
+  std::uint32_t keptCell[kCachedCells], keptAt[kCachedCells];
+  std::size_t kept = 0;
+  const auto before = static_cast<std::size_t>(g.cells.count());
+  for (std::size_t i = 0; i < before; ++i) {
+    if (cells.contains(keys_[g.cell[i]])) {
+      keptCell[kept] = g.cell[i];
+      keptAt[kept] = g.at[i];
+      ++kept;
+    }
+  }
+  // Leave the cells outside the new range. dropAt moves another entry into the hole, and that
+  // entry may be one of this item's own (never: an item has one entry a cell), so the kept
+  // indices stay right; it re-points the moved entry's item, which is another item.
+  for (std::size_t i = 0; i < before; ++i) {
+    if (!cells.contains(keys_[g.cell[i]])) dropAt(g.cell[i], g.at[i]);
+  }
+  g.cells = cells;
+  std::size_t n = 0;
+  Grid::forEachCell(cells, [&](Cell c) {
+    for (std::size_t j = 0; j < kept; ++j) {
+      if (keys_[keptCell[j]] == c) {
+        HashEntry& e = cells_[keptCell[j]][keptAt[j]];
+        e.rect = r;
+        e.tag = tag;
+        g.cell[n] = keptCell[j];
+        g.at[n] = keptAt[j];
+        ++n;
+        return;
+      }
+    }
+    const std::uint32_t k = cellFor(c);
+    auto& items = cells_[k];
+    if (items.size() == items.capacity()) regrow(items, std::max<std::size_t>(4, 2 * items.size()));
+    g.cell[n] = k;
+    g.at[n] = static_cast<std::uint32_t>(items.size());
+    ++n;
+    items.push_back({r, tag, g.generation});
+    sync(k);
+  });
+}
+
 void SpatialHash::drop(std::uint32_t slot) {
   const Registration& g = regs_[slot];
   if (g.cached()) {
@@ -129,8 +180,11 @@ void SpatialHash::dropAt(std::uint32_t k, std::uint32_t at) {
     freeCell(k);
     return;
   }
+  // A cell gives its buffer back for the next size down once its entries fill a quarter of it,
+  // not half: movers crossing a cell line back and forth would otherwise trade buffers on every
+  // crossing (a cell of 5 in a buffer of 8 loses one: 4 fit in 4; the next arrival: 8 again).
   const std::size_t smaller = items.capacity() / 2;
-  if (smaller >= 4 && items.size() <= smaller) {
+  if (smaller >= 4 && items.size() <= smaller / 2) {
     const auto pool = static_cast<std::size_t>(std::countr_zero(smaller));
     if (pool < spares_.size() && !spares_[pool].empty()) regrow(items, smaller);
   }
@@ -237,8 +291,8 @@ void SpatialHash::sync(std::uint32_t k) {
 // old one, a cell that empties to half gives its buffer back for a smaller one. So the
 // heap is only touched when more cells are crowded *at once* than ever before, not each time
 // some cell sees its own peak — which in a moving crowd goes on for tens of thousands of ticks.
-// A cell leaves a buffer as soon as its entries fit the next size down, so the buffers of a size
-// in use are the cells crowded to that size right now.
+// A cell leaves a buffer once its entries fill a quarter of it, so the buffers of a size in use
+// are the cells crowded to at least a quarter of that size right now.
 void SpatialHash::regrow(std::vector<HashEntry>& items, std::size_t capacity) {
   const auto pool = static_cast<std::size_t>(std::countr_zero(capacity));
   reservePools(pool);

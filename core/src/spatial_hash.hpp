@@ -56,6 +56,31 @@ class SpatialHash {
   /// Moves `slot`'s registration to `r`.
   void update(std::uint32_t slot, const Rect& r);
 
+  // -- a move that stays in its cells (most moves of a crowd): no hashing, no cell indices ------
+  /// True when `slot` is registered in few enough cells to remember them and `to` is held by
+  /// exactly those cells.
+  [[nodiscard]] bool staysInCells(std::uint32_t slot, const Rect& to) const {
+    const Registration& g = regs_[slot];
+    return g.cached() && grid_.cellsHolding(to) == g.cells;
+  }
+  /// With staysInCells: calls f(const HashEntry&) for every entry of the cells `slot` is
+  /// registered in (its own included) until f returns true; returns whether one did.
+  template <class F>
+  [[nodiscard]] bool anyInOwnCells(std::uint32_t slot, F&& f) const {
+    const Registration& g = regs_[slot];
+    const auto n = static_cast<std::size_t>(g.cells.count());
+    for (std::size_t i = 0; i < n; ++i)
+      for (const HashEntry& e : cells_[g.cell[i]])
+        if (f(e)) return true;
+    return false;
+  }
+  /// With staysInCells: `slot`'s registration now holds `to`.
+  void rewrite(std::uint32_t slot, const Rect& to) {
+    const Registration& g = regs_[slot];
+    const auto n = static_cast<std::size_t>(g.cells.count());
+    for (std::size_t i = 0; i < n; ++i) cells_[g.cell[i]][g.at[i]].rect = to;
+  }
+
   /// The entries of a cell; empty when no item is registered there.
   [[nodiscard]] std::span<const HashEntry> items(Cell c) const {
     const Bucket& b = find(c);
@@ -116,6 +141,7 @@ class SpatialHash {
   void growTable();
   void sync(std::uint32_t k);
   void add(std::uint32_t slot, const Rect& r, const CellRange& cells);
+  void shift(std::uint32_t slot, const Rect& r, const CellRange& cells);
   void drop(std::uint32_t slot);
   void dropAt(std::uint32_t k, std::uint32_t at);
   void repoint(std::uint32_t slot, std::uint32_t k, std::uint32_t at);

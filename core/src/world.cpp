@@ -102,12 +102,8 @@ World::Hash::~Hash() {
 
 // [SECTION] validation --------------------------------------------------------------------------
 
-const World::Slot& World::slot(ItemId id, std::string_view where) const {
-  if (!id.valid() || id.index >= slots_.size() || !slots_[id.index].alive ||
-      slots_[id.index].generation != id.generation) {
-    fail(where, "item " + describe(id) + " is not in the world (never added, or removed)");
-  }
-  return slots_[id.index];
+void World::refuseItem(ItemId id, std::string_view where) const {
+  fail(where, "item " + describe(id) + " is not in the world (never added, or removed)");
 }
 
 void World::validateRect(const Rect& r, std::string_view where) const {
@@ -141,12 +137,7 @@ void World::validateRect(const Rect& r, std::string_view where) const {
   }
 }
 
-void World::validateGoal(const Rect& r, Vec2 goal, std::string_view where) const {
-  // The common case in one test: a finite far edge means a finite goal (w and h are finite).
-  if (const Rect g = r.at(goal); std::isfinite(g.right()) && std::isfinite(g.bottom()) &&
-                                 grid_.fits(g) && inRange(goal.x) && inRange(goal.y)) [[likely]] {
-    return;
-  }
+void World::refuseGoal(const Rect& r, Vec2 goal, std::string_view where) const {
   requireFinite(where, "goal.x", goal.x);
   requireFinite(where, "goal.y", goal.y);
   const Rect g = r.at(goal);
@@ -158,10 +149,8 @@ void World::validateGoal(const Rect& r, Vec2 goal, std::string_view where) const
   requireInRange(where, "goal.y", goal.y);
 }
 
-void World::validateOptions(const MoveOptions& o, std::string_view where) const {
-  if (o.maxResponses < 1 || o.maxResponses > 4096) {
-    fail(where, "maxResponses must be in [1, 4096], but was " + std::to_string(o.maxResponses));
-  }
+void World::refuseOptions(const MoveOptions& o, std::string_view where) const {
+  fail(where, "maxResponses must be in [1, 4096], but was " + std::to_string(o.maxResponses));
 }
 
 // [SECTION] items -------------------------------------------------------------------------------
@@ -486,10 +475,14 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
 // filter may be asked about pairs the full path would not have asked about (it must be a pure
 // function of the pair, as the full path already asks in an order that depends on the cells).
 // Longer moves take the full path, whose swept walk reads fewer cells.
-bool World::reachesNothing(ItemId self, const Rect& r, Vec2 goal, Filter filter) const {
-  const Rect hull = unite(r, r.at(goal));
-  const CellRange all = grid_.cellsOf(hull);
+bool World::reachesNothing(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter) const {
+  // The box by its edges, without rounding it into a Rect. Items are registered in the cells
+  // their half-open extent meets, so an item whose interior meets the box shares one of the
+  // cells the half-open box meets: those are all the cells to read.
+  const double x0 = std::min(r.x, goal.x), y0 = std::min(r.y, goal.y);
+  const double x1 = std::max(r.right(), goal.x + r.w), y1 = std::max(r.bottom(), goal.y + r.h);
   const detail::SpatialHash& hash = *hash_;
+  const CellRange all = grid_.cellsHolding(x0, y0, x1, y1);
   const CellRange& used = hash.liveBox();
   const CellRange box{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
                       std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
@@ -497,8 +490,14 @@ bool World::reachesNothing(ItemId self, const Rect& r, Vec2 goal, Filter filter)
   for (std::int64_t cy = box.y0; cy <= box.y1; ++cy) {
     for (std::int64_t cx = box.x0; cx <= box.x1; ++cx) {
       for (const detail::HashEntry& e : hash.items({cx, cy})) {
-        if (e.slot() == self.index || !overlaps(hull, e.rect)) continue;
-        if (filter(self, ItemId{e.slot(), e.generation}) != response::ignore) return false;
+        const Rect& o = e.rect;
+        if (!(o.x < x1 && x0 < o.right() && o.y < y1 && y0 < o.bottom()) || e.slot() == self) {
+          continue;
+        }
+        if (filter(ItemId{self, slots_[self].generation}, ItemId{e.slot(), e.generation}) !=
+            response::ignore) {
+          return false;
+        }
       }
     }
   }
@@ -572,10 +571,31 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
   const Slot& s = slot(id, kMove);
   validateGoal(s.rect, goal, kMove);
   validateOptions(options, kMove);
-  if (activeTrace(options.trace) == nullptr && reachesNothing(id, s.rect, goal, filter)) {
-    collisions_.clear();
-    place(id.index, s.rect.at(goal));
-    return {goal, {}};
+  if (activeTrace(options.trace) == nullptr) {
+    const Rect to = s.rect.at(goal);
+    detail::SpatialHash& hash = *hash_;
+    if (hash.staysInCells(id.index, to)) {
+      // The move's box lies in the cells the item is in: read them without finding them.
+      const double x0 = std::min(s.rect.x, to.x), y0 = std::min(s.rect.y, to.y);
+      const double x1 = std::max(s.rect.right(), to.right());
+      const double y1 = std::max(s.rect.bottom(), to.bottom());
+      const bool reaches = hash.anyInOwnCells(id.index, [&](const detail::HashEntry& e) {
+        const Rect& o = e.rect;
+        return o.x < x1 && x0 < o.right() && o.y < y1 && y0 < o.bottom() &&
+               e.slot() != id.index &&
+               filter(id, ItemId{e.slot(), e.generation}) != response::ignore;
+      });
+      if (!reaches) {
+        collisions_.clear();
+        hash.rewrite(id.index, to);
+        slots_[id.index].rect = to;
+        return {goal, {}};
+      }
+    } else if (reachesNothing(id.index, s.rect, goal, filter)) {
+      collisions_.clear();
+      place(id.index, to);
+      return {goal, {}};
+    }
   }
   const MoveResult result = run(id.index, s.rect, goal, filter, options);
   place(id.index, s.rect.at(result.position));  // every leg was checked as it was made

@@ -73,9 +73,13 @@ class Grid {
   /// interiors overlap share one of these cells; a rect narrower than the rounding of its
   /// coordinates still has the cell of its top-left corner.
   [[nodiscard]] CellRange cellsHolding(const Rect& r) const {
-    const std::int64_t x0 = index(r.x), y0 = index(r.y);
-    return {x0, y0, std::max(x0, index(justBelow(r.right()))),
-            std::max(y0, index(justBelow(r.bottom())))};
+    return cellsHolding(r.x, r.y, r.right(), r.bottom());
+  }
+  /// The same for the half-open box [left, right) × [top, bottom) given by its edges.
+  [[nodiscard]] CellRange cellsHolding(double left, double top, double right,
+                                       double bottom) const {
+    const std::int64_t x0 = index(left), y0 = index(top);
+    return {x0, y0, std::max(x0, index(justBelow(right))), std::max(y0, index(justBelow(bottom)))};
   }
   /// True when the rect's cell indices fit the hash (|coordinate / cellSize| < 2^52).
   [[nodiscard]] bool fits(const Rect& r) const {

@@ -226,10 +226,32 @@ class World {
     detail::SpatialHash* p_;
   };
 
-  const Slot& slot(ItemId id, std::string_view where) const;
+  // The checks every call makes, inline for the common case; the refusals (which name the value
+  // and throw tv::Error) out of line.
+  const Slot& slot(ItemId id, std::string_view where) const {
+    // An invalid id's index (kNone) is beyond every slot: the world holds at most 2^31.
+    if (id.index >= slots_.size() || !slots_[id.index].alive ||
+        slots_[id.index].generation != id.generation) [[unlikely]] {
+      refuseItem(id, where);
+    }
+    return slots_[id.index];
+  }
   void validateRect(const Rect& r, std::string_view where) const;
-  void validateGoal(const Rect& r, Vec2 goal, std::string_view where) const;
-  void validateOptions(const MoveOptions& o, std::string_view where) const;
+  void validateGoal(const Rect& r, Vec2 goal, std::string_view where) const {
+    // The common case in one test: a finite far edge means a finite goal (w and h are finite).
+    if (const Rect g = r.at(goal); std::isfinite(g.right()) && std::isfinite(g.bottom()) &&
+                                   grid_.fits(g) && inRange(goal.x) && inRange(goal.y)) [[likely]] {
+      return;
+    }
+    refuseGoal(r, goal, where);
+  }
+  void validateOptions(const MoveOptions& o, std::string_view where) const {
+    if (o.maxResponses < 1 || o.maxResponses > 4096) [[unlikely]] refuseOptions(o, where);
+  }
+  [[noreturn]] void refuseItem(ItemId id, std::string_view where) const;
+  // Throws naming what is wrong; returns when nothing is (the fast test is only a shortcut).
+  void refuseGoal(const Rect& r, Vec2 goal, std::string_view where) const;
+  [[noreturn]] void refuseOptions(const MoveOptions& o, std::string_view where) const;
 
   std::uint32_t newSlot();
   ItemId fill(std::uint32_t index, const Rect& r);  // add into a free slot, validated
@@ -238,7 +260,7 @@ class World {
   void addExtent(const Rect& r);
   void dropExtent(const Rect& r);
 
-  bool reachesNothing(ItemId self, const Rect& r, Vec2 goal, Filter filter) const;
+  bool reachesNothing(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter) const;
   MoveResult run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
                  const MoveOptions& o) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
