@@ -180,11 +180,12 @@ void SpatialHash::dropAt(std::uint32_t k, std::uint32_t at) {
     freeCell(k);
     return;
   }
-  // A cell gives its buffer back for the next size down once its entries fill a quarter of it,
-  // not half: movers crossing a cell line back and forth would otherwise trade buffers on every
-  // crossing (a cell of 5 in a buffer of 8 loses one: 4 fit in 4; the next arrival: 8 again).
+  // A cell gives its buffer back for the next size down once its entries leave a free place in
+  // it, not as soon as they fit: movers crossing a cell line back and forth would otherwise trade
+  // buffers on every crossing (a cell of 5 in a buffer of 8 loses one: 4 fit in 4; the next
+  // arrival: 8 again).
   const std::size_t smaller = items.capacity() / 2;
-  if (smaller >= 4 && items.size() <= smaller / 2) {
+  if (smaller >= 4 && items.size() < smaller) {
     const auto pool = static_cast<std::size_t>(std::countr_zero(smaller));
     if (pool < spares_.size() && !spares_[pool].empty()) regrow(items, smaller);
   }
@@ -291,8 +292,8 @@ void SpatialHash::sync(std::uint32_t k) {
 // old one, a cell that empties to half gives its buffer back for a smaller one. So the
 // heap is only touched when more cells are crowded *at once* than ever before, not each time
 // some cell sees its own peak — which in a moving crowd goes on for tens of thousands of ticks.
-// A cell leaves a buffer once its entries fill a quarter of it, so the buffers of a size in use
-// are the cells crowded to at least a quarter of that size right now.
+// A cell leaves a buffer once its entries would leave a place free in the next size down, so the
+// buffers of a size in use are the cells crowded to about that size right now.
 void SpatialHash::regrow(std::vector<HashEntry>& items, std::size_t capacity) {
   const auto pool = static_cast<std::size_t>(std::countr_zero(capacity));
   reservePools(pool);
