@@ -16,6 +16,8 @@ SpatialHash::SpatialHash(const SpatialHash& other)
       cells_(other.cells_),
       freeCells_(other.freeCells_),
       regs_(other.regs_),
+      large_(other.large_),
+      freeLarge_(other.freeLarge_),
       spares_(other.spares_),
       buffers_(other.buffers_),
       occupied_(other.occupied_),
@@ -44,30 +46,28 @@ SpatialHash& SpatialHash::operator=(const SpatialHash& other) {
 
 void SpatialHash::insert(std::uint32_t slot, std::uint32_t generation, const Rect& r) {
   if (regs_.size() <= slot) regs_.resize(std::size_t{slot} + 1);
-  regs_[slot].generation = generation;
-  add(slot, r, grid_.cellsHolding(r));
+  add(slot, generation, r, grid_.cellsHolding(r));
 }
 
 void SpatialHash::erase(std::uint32_t slot) {
   drop(slot);
-  regs_[slot].cells = CellRange{};
 }
 
 void SpatialHash::update(std::uint32_t slot, const Rect& r) {
   Registration& g = regs_[slot];
   const CellRange cells = grid_.cellsHolding(r);
-  if (cells != g.cells) {
-    if (g.cached() && cells.count() <= static_cast<std::int64_t>(kCachedCells)) {
-      shift(slot, r, cells);
+  if (cells != cellsOf(g)) {
+    const std::uint32_t generation = generationOf(slot);
+    if (!g.large && cells.count() <= static_cast<std::int64_t>(kCachedCells)) {
+      shift(slot, generation, r, cells);
     } else {
       drop(slot);
-      add(slot, r, cells);
+      add(slot, generation, r, cells);
     }
     return;
   }
-  if (g.cached()) {
-    const auto n = static_cast<std::size_t>(cells.count());
-    for (std::size_t i = 0; i < n; ++i) cells_[g.cell[i]][g.at[i]].rect = r;
+  if (!g.large) {
+    rewrite(slot, r);
     return;
   }
   Grid::forEachCell(cells, [&](Cell c) {
@@ -80,9 +80,34 @@ void SpatialHash::update(std::uint32_t slot, const Rect& r) {
   });
 }
 
-void SpatialHash::add(std::uint32_t slot, const Rect& r, const CellRange& cells) {
+std::uint32_t SpatialHash::generationOf(std::uint32_t slot) const {
+  const Registration& g = regs_[slot];
+  if (!g.large) return cells_[g.cell[0]][g.at[0]].generation;
+  const CellRange& cells = large_[g.cell[0]];
+  for (const HashEntry& e : items({cells.x0, cells.y0}))
+    if (e.slot() == slot) return e.generation;
+  assert(false && "a large item is not in its first cell");
+  return 0;
+}
+
+void SpatialHash::add(std::uint32_t slot, std::uint32_t generation, const Rect& r,
+                      const CellRange& cells) {
   Registration& g = regs_[slot];
-  g.cells = cells;
+  assert(g.nx == 0 && !g.large);
+  if (cells.count() > static_cast<std::int64_t>(kCachedCells)) {
+    g.large = true;
+    if (freeLarge_.empty()) {
+      g.cell[0] = static_cast<std::uint32_t>(large_.size());
+      large_.push_back(cells);
+    } else {
+      g.cell[0] = freeLarge_.back();
+      freeLarge_.pop_back();
+      large_[g.cell[0]] = cells;
+    }
+  } else {
+    g.nx = static_cast<std::uint8_t>(cells.x1 - cells.x0 + 1);
+    g.ny = static_cast<std::uint8_t>(cells.y1 - cells.y0 + 1);
+  }
   const std::uint32_t tag = slot | (cells.count() > 1 ? HashEntry::kShared : 0u);
   std::size_t n = 0;
   Grid::forEachCell(cells, [&](Cell c) {
@@ -91,12 +116,12 @@ void SpatialHash::add(std::uint32_t slot, const Rect& r, const CellRange& cells)
     if (items.size() == items.capacity()) {
       regrow(items, std::max<std::size_t>(4, 2 * items.size()));
     }
-    if (n < kCachedCells) {
+    if (!g.large) {
       g.cell[n] = k;
       g.at[n] = static_cast<std::uint32_t>(items.size());
     }
     ++n;
-    items.push_back({r, tag, g.generation});
+    items.push_back({r, tag, generation});
     sync(k);
   });
 }
@@ -104,12 +129,13 @@ void SpatialHash::add(std::uint32_t slot, const Rect& r, const CellRange& cells)
 // A small item that moves into other cells keeps its entries in the cells it stays in (they only
 // get the new rect) and leaves and enters only the cells at the edges: a mover crossing a cell
 // line touches one or two cells, not all of them twice.
-void SpatialHash::shift(std::uint32_t slot, const Rect& r, const CellRange& cells) {
+void SpatialHash::shift(std::uint32_t slot, std::uint32_t generation, const Rect& r,
+                        const CellRange& cells) {
   Registration& g = regs_[slot];
   const std::uint32_t tag = slot | (cells.count() > 1 ? HashEntry::kShared : 0u);
   std::uint32_t keptCell[kCachedCells], keptAt[kCachedCells];
   std::size_t kept = 0;
-  const auto before = static_cast<std::size_t>(g.cells.count());
+  const std::size_t before = g.count();
   for (std::size_t i = 0; i < before; ++i) {
     if (cells.contains(keys_[g.cell[i]])) {
       keptCell[kept] = g.cell[i];
@@ -117,13 +143,13 @@ void SpatialHash::shift(std::uint32_t slot, const Rect& r, const CellRange& cell
       ++kept;
     }
   }
-  // Leave the cells outside the new range. dropAt moves another entry into the hole, and that
-  // entry may be one of this item's own (never: an item has one entry a cell), so the kept
-  // indices stay right; it re-points the moved entry's item, which is another item.
+  // Leave the cells outside the new range. dropAt moves another item's entry into the hole (an
+  // item has one entry a cell) and re-points that item, so the kept indices stay right.
   for (std::size_t i = 0; i < before; ++i) {
     if (!cells.contains(keys_[g.cell[i]])) dropAt(g.cell[i], g.at[i]);
   }
-  g.cells = cells;
+  g.nx = static_cast<std::uint8_t>(cells.x1 - cells.x0 + 1);
+  g.ny = static_cast<std::uint8_t>(cells.y1 - cells.y0 + 1);
   std::size_t n = 0;
   Grid::forEachCell(cells, [&](Cell c) {
     for (std::size_t j = 0; j < kept; ++j) {
@@ -143,19 +169,25 @@ void SpatialHash::shift(std::uint32_t slot, const Rect& r, const CellRange& cell
     g.cell[n] = k;
     g.at[n] = static_cast<std::uint32_t>(items.size());
     ++n;
-    items.push_back({r, tag, g.generation});
+    items.push_back({r, tag, generation});
     sync(k);
   });
 }
 
+// Forgets every entry of `slot`; its registration is empty afterwards.
 void SpatialHash::drop(std::uint32_t slot) {
-  const Registration& g = regs_[slot];
-  if (g.cached()) {
-    const auto n = static_cast<std::size_t>(g.cells.count());
+  Registration& g = regs_[slot];
+  if (!g.large) {
+    const std::size_t n = g.count();
+    // dropAt re-points other items only: this one's remaining indices stay right.
     for (std::size_t i = 0; i < n; ++i) dropAt(g.cell[i], g.at[i]);
+    g.nx = g.ny = 0;
     return;
   }
-  Grid::forEachCell(g.cells, [&](Cell c) {
+  const CellRange cells = large_[g.cell[0]];
+  freeLarge_.push_back(g.cell[0]);
+  g = Registration{};
+  Grid::forEachCell(cells, [&](Cell c) {
     const std::uint32_t k = find(c).cell;
     assert(k != kNoCell);
     const auto& items = cells_[k];
@@ -194,8 +226,8 @@ void SpatialHash::dropAt(std::uint32_t k, std::uint32_t at) {
 
 void SpatialHash::repoint(std::uint32_t slot, std::uint32_t k, std::uint32_t at) {
   Registration& g = regs_[slot];
-  if (!g.cached()) return;  // large items find themselves by scanning
-  const auto n = static_cast<std::size_t>(g.cells.count());
+  if (g.large) return;  // large items find themselves by scanning
+  const std::size_t n = g.count();
   for (std::size_t i = 0; i < n; ++i) {
     if (g.cell[i] == k) {
       g.at[i] = at;
@@ -298,9 +330,10 @@ void SpatialHash::regrow(std::vector<HashEntry>& items, std::size_t capacity) {
   const auto pool = static_cast<std::size_t>(std::countr_zero(capacity));
   reservePools(pool);
   if (spares_[pool].empty()) {
-    // Out of spares: make half as many again as this size has in circulation, as a vector grows
-    // geometrically, so a new peak must be half as high again before the heap is touched again.
-    const std::size_t extra = std::max<std::size_t>(1, buffers_[pool] / 2);
+    // Out of spares: make a quarter as many again as this size has in circulation, as a vector
+    // grows geometrically, so a new peak must be a quarter higher before the heap is touched
+    // again.
+    const std::size_t extra = std::max<std::size_t>(1, buffers_[pool] / 4);
     for (std::size_t i = 0; i < extra; ++i) spares_[pool].emplace_back().reserve(capacity);
     buffers_[pool] += extra;
   }
@@ -310,8 +343,17 @@ void SpatialHash::regrow(std::vector<HashEntry>& items, std::size_t capacity) {
   if (items.capacity() > 0) {
     const auto old = static_cast<std::size_t>(std::countr_zero(items.capacity()));
     reservePools(old);
-    items.clear();
-    spares_[old].push_back(std::move(items));
+    // Spares beyond half the buffers of that size in use (a world filling up leaves one behind
+    // each time a cell outgrows it) go back to the heap: a crowd's cells come and go by far
+    // fewer than half at once.
+    const std::size_t inUse = buffers_[old] - spares_[old].size();
+    if (spares_[old].size() >= inUse / 2 + 16) {
+      std::vector<HashEntry>().swap(items);
+      --buffers_[old];
+    } else {
+      items.clear();
+      spares_[old].push_back(std::move(items));
+    }
   }
   items = std::move(next);
 }
@@ -330,6 +372,8 @@ std::size_t SpatialHash::memoryBytes() const {
                       cells_.capacity() * sizeof(std::vector<HashEntry>) +
                       freeCells_.capacity() * sizeof(std::uint32_t) +
                       regs_.capacity() * sizeof(Registration) +
+                      large_.capacity() * sizeof(CellRange) +
+                      freeLarge_.capacity() * sizeof(std::uint32_t) +
                       buffers_.capacity() * sizeof(std::size_t);
   for (const auto& c : cells_) bytes += c.capacity() * sizeof(HashEntry);
   for (const auto& pool : spares_) {

@@ -61,14 +61,17 @@ class SpatialHash {
   /// exactly those cells.
   [[nodiscard]] bool staysInCells(std::uint32_t slot, const Rect& to) const {
     const Registration& g = regs_[slot];
-    return g.cached() && grid_.cellsHolding(to) == g.cells;
+    if (g.large) return false;
+    const CellRange c = grid_.cellsHolding(to);
+    return c.x1 - c.x0 + 1 == g.nx && c.y1 - c.y0 + 1 == g.ny &&
+           keys_[g.cell[0]] == Cell{c.x0, c.y0};
   }
   /// With staysInCells: calls f(const HashEntry&) for every entry of the cells `slot` is
   /// registered in (its own included) until f returns true; returns whether one did.
   template <class F>
   [[nodiscard]] bool anyInOwnCells(std::uint32_t slot, F&& f) const {
     const Registration& g = regs_[slot];
-    const auto n = static_cast<std::size_t>(g.cells.count());
+    const std::size_t n = g.count();
     for (std::size_t i = 0; i < n; ++i)
       for (const HashEntry& e : cells_[g.cell[i]])
         if (f(e)) return true;
@@ -77,7 +80,7 @@ class SpatialHash {
   /// With staysInCells: `slot`'s registration now holds `to`.
   void rewrite(std::uint32_t slot, const Rect& to) {
     const Registration& g = regs_[slot];
-    const auto n = static_cast<std::size_t>(g.cells.count());
+    const std::size_t n = g.count();
     for (std::size_t i = 0; i < n; ++i) cells_[g.cell[i]][g.at[i]].rect = to;
   }
 
@@ -103,17 +106,23 @@ class SpatialHash {
  private:
   static constexpr std::size_t kCachedCells = 4;
 
-  // Where a slot is registered: its cells, and for small items each cell's index and the
-  // item's entry's index in it.
+  // Where a slot is registered, in 36 bytes. A small item (at most kCachedCells cells, nearly
+  // every item) remembers its cells row by row — the first is the range's top-left, whose key
+  // gives the range with nx and ny — and its entry's index in each. A large item keeps its range
+  // in large_ (cell[0] says where) and finds its entries by scanning.
   struct Registration {
-    CellRange cells;
     std::uint32_t cell[kCachedCells] = {};
     std::uint32_t at[kCachedCells] = {};
-    std::uint32_t generation = 0;
-    [[nodiscard]] bool cached() const {
-      return cells.count() <= static_cast<std::int64_t>(kCachedCells);
-    }
+    std::uint8_t nx = 0, ny = 0;  // cells across and down; 0 when not registered
+    bool large = false;
+    [[nodiscard]] std::size_t count() const { return std::size_t{nx} * ny; }
   };
+  [[nodiscard]] CellRange cellsOf(const Registration& g) const {
+    if (g.large) return large_[g.cell[0]];
+    if (g.nx == 0) return {};
+    const Cell c = keys_[g.cell[0]];
+    return {c.x, c.y, c.x + g.nx - 1, c.y + g.ny - 1};
+  }
   // A bucket mirrors its cell's entries (pointer and count), so a probe reads a cell with two
   // dependent loads instead of three; every change to a cell's entries re-syncs it.
   struct Bucket {
@@ -140,9 +149,10 @@ class SpatialHash {
   void freeCell(std::uint32_t k);
   void growTable();
   void sync(std::uint32_t k);
-  void add(std::uint32_t slot, const Rect& r, const CellRange& cells);
-  void shift(std::uint32_t slot, const Rect& r, const CellRange& cells);
+  void add(std::uint32_t slot, std::uint32_t generation, const Rect& r, const CellRange& cells);
+  void shift(std::uint32_t slot, std::uint32_t generation, const Rect& r, const CellRange& cells);
   void drop(std::uint32_t slot);
+  [[nodiscard]] std::uint32_t generationOf(std::uint32_t slot) const;
   void dropAt(std::uint32_t k, std::uint32_t at);
   void repoint(std::uint32_t slot, std::uint32_t k, std::uint32_t at);
   void regrow(std::vector<HashEntry>& items, std::size_t capacity);
@@ -156,6 +166,8 @@ class SpatialHash {
   std::vector<std::vector<HashEntry>> cells_;
   std::vector<std::uint32_t> freeCells_;  // cell storage that an emptied cell left
   std::vector<Registration> regs_;        // per slot
+  std::vector<CellRange> large_;          // the ranges of large items
+  std::vector<std::uint32_t> freeLarge_;  // places in large_ to reuse
   std::vector<std::vector<std::vector<HashEntry>>> spares_;  // [log2 capacity]: buffers to trade
   std::vector<std::size_t> buffers_;  // [log2 capacity]: buffers made, in cells or spare
   std::size_t occupied_ = 0;

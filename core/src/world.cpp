@@ -182,6 +182,7 @@ std::uint32_t World::newSlot() {
   if (slots_.size() >= detail::HashEntry::kShared) fail(kAdd, "the world holds 2^31 items already");
   const auto index = static_cast<std::uint32_t>(slots_.size());
   slots_.emplace_back();
+  orders_.push_back(0);
   stamp_.push_back(0);
   return index;
 }
@@ -189,7 +190,7 @@ std::uint32_t World::newSlot() {
 ItemId World::fill(std::uint32_t index, const Rect& r) {
   Slot& s = slots_[index];
   s.rect = r;
-  s.order = nextOrder_++;
+  orders_[index] = nextOrder_++;
   s.alive = true;
   hash_->insert(index, s.generation, r);
   addExtent(r);
@@ -248,7 +249,8 @@ Rect World::rect(ItemId id) const {
 }
 
 std::uint64_t World::order(ItemId id) const {
-  return slot(id, "tv::World::order").order;
+  slot(id, "tv::World::order");
+  return orders_[id.index];
 }
 
 double World::minExtent() const {
@@ -304,6 +306,7 @@ std::size_t World::memoryBytes() const {
   std::size_t bytes = hash_->memoryBytes() + slots_.capacity() * sizeof(Slot) +
                       freeSlots_.capacity() * sizeof(std::uint32_t) +
                       stamp_.capacity() * sizeof(std::uint32_t) +
+                      orders_.capacity() * sizeof(std::uint64_t) +
                       collisions_.capacity() * sizeof(Collision) +
                       (excluded_.capacity() + queryScratch_.capacity()) * sizeof(std::uint32_t) +
                       responses_.capacity() * sizeof(NamedResponse);
@@ -437,7 +440,7 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
                      // Add order breaks exact ties only, so the slots (a cache miss each) are read
                      // only then.
                      if (found && !before(r, goal, s, otherRect, lead, leadRect, [&] {
-                           return slots_[other].order < slots_[leadId.index].order;
+                           return orders_[other] < orders_[leadId.index];
                          })) {
                        return;
                      }
@@ -689,7 +692,7 @@ void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) cons
                      if (overlaps(r, rect)) queryScratch_.push_back(other);
                    });
   std::sort(queryScratch_.begin(), queryScratch_.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return slots_[a].order < slots_[b].order; });
+            [&](std::uint32_t a, std::uint32_t b) { return orders_[a] < orders_[b]; });
   for (const std::uint32_t k : queryScratch_) out.push_back({k, slots_[k].generation});
 }
 
@@ -741,7 +744,7 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
     if (contains(e.rect, p)) queryScratch_.push_back(e.slot());
   }
   std::sort(queryScratch_.begin(), queryScratch_.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return slots_[a].order < slots_[b].order; });
+            [&](std::uint32_t a, std::uint32_t b) { return orders_[a] < orders_[b]; });
   std::vector<ItemId> out;
   for (const std::uint32_t k : queryScratch_) out.push_back({k, slots_[k].generation});
   return out;
@@ -779,7 +782,7 @@ std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
       });
   std::sort(out.begin(), out.end(), [&](const SegmentHit& x, const SegmentHit& y) {
     if (x.t0 != y.t0) return x.t0 < y.t0;
-    return slots_[x.item.index].order < slots_[y.item.index].order;
+    return orders_[x.item.index] < orders_[y.item.index];
   });
   return out;
 }
@@ -797,7 +800,7 @@ std::uint64_t World::stateHash() const {
   for (const std::uint32_t k : freeSlots_) feed((std::uint64_t{slots_[k].generation} << 32) | k);
   forEachItem([&](ItemId id, const Rect& r) {
     feed((std::uint64_t{id.generation} << 32) | id.index);
-    feed(slots_[id.index].order);
+    feed(orders_[id.index]);
     feed(std::bit_cast<std::uint64_t>(r.x));
     feed(std::bit_cast<std::uint64_t>(r.y));
     feed(std::bit_cast<std::uint64_t>(r.w));
@@ -816,8 +819,9 @@ WorldState World::state() const {
   WorldState s;
   s.cellSize = grid_.cellSize();
   s.slots.reserve(slots_.size());
-  for (const Slot& slot : slots_) {
-    s.slots.push_back({slot.alive ? slot.rect : Rect{}, slot.alive ? slot.order : 0,
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    const Slot& slot = slots_[i];
+    s.slots.push_back({slot.alive ? slot.rect : Rect{}, slot.alive ? orders_[i] : 0,
                        slot.generation, slot.alive});
   }
   s.freeSlots = freeSlots_;
@@ -875,6 +879,7 @@ void World::restore(const WorldState& s) {
   World fresh(grid_.cellSize());
   fresh.responses_ = responses_;
   fresh.slots_.resize(s.slots.size());
+  fresh.orders_.assign(s.slots.size(), 0);
   fresh.stamp_.assign(s.slots.size(), 0);
   for (std::uint32_t i = 0; i < s.slots.size(); ++i) {
     const WorldState::Slot& in = s.slots[i];
@@ -882,7 +887,7 @@ void World::restore(const WorldState& s) {
     out.generation = in.generation;
     if (!in.alive) continue;
     out.rect = in.rect;
-    out.order = in.order;
+    fresh.orders_[i] = in.order;
     out.alive = true;
     fresh.hash_->insert(i, in.generation, in.rect);
     fresh.addExtent(in.rect);
