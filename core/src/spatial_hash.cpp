@@ -367,14 +367,13 @@ void SpatialHash::reservePools(std::size_t pool) {
 }
 
 std::size_t SpatialHash::memoryBytes() const {
-  std::size_t bytes = table_.capacity() * sizeof(Bucket) + keys_.capacity() * sizeof(Cell) +
-                      bucketOf_.capacity() * sizeof(std::uint32_t) +
-                      cells_.capacity() * sizeof(std::vector<HashEntry>) +
-                      freeCells_.capacity() * sizeof(std::uint32_t) +
-                      regs_.capacity() * sizeof(Registration) +
-                      large_.capacity() * sizeof(CellRange) +
-                      freeLarge_.capacity() * sizeof(std::uint32_t) +
-                      buffers_.capacity() * sizeof(std::size_t);
+  std::size_t bytes =
+      table_.capacity() * sizeof(Bucket) + keys_.capacity() * sizeof(Cell) +
+      bucketOf_.capacity() * sizeof(std::uint32_t) +
+      cells_.capacity() * sizeof(std::vector<HashEntry>) +
+      freeCells_.capacity() * sizeof(std::uint32_t) + regs_.capacity() * sizeof(Registration) +
+      large_.capacity() * sizeof(CellRange) + freeLarge_.capacity() * sizeof(std::uint32_t) +
+      buffers_.capacity() * sizeof(std::size_t);
   for (const auto& c : cells_) bytes += c.capacity() * sizeof(HashEntry);
   for (const auto& pool : spares_) {
     bytes += pool.capacity() * sizeof(std::vector<HashEntry>);

@@ -157,8 +157,8 @@ void World::refuseOptions(const MoveOptions& o, std::string_view where) const {
 
 ItemId World::add(const Rect& r) {
   if (observer_ && !observer_->busy()) [[unlikely]] {
-    return observed(*observer_, [&] { return add(r); },
-                    [&](ItemId id) { observer_->added(id, r); });
+    return observed(
+        *observer_, [&] { return add(r); }, [&](ItemId id) { observer_->added(id, r); });
   }
   validateRect(r, kAdd);
   std::uint32_t index;
@@ -200,7 +200,8 @@ ItemId World::fill(std::uint32_t index, const Rect& r) {
 
 void World::remove(ItemId id) {
   if (observer_ && !observer_->busy()) [[unlikely]] {
-    return observed(*observer_, [&] { remove(id); }, [&] { observer_->removed(id); });
+    return observed(
+        *observer_, [&] { remove(id); }, [&] { observer_->removed(id); });
   }
   slot(id, "tv::World::remove");
   Slot& s = slots_[id.index];
@@ -218,7 +219,8 @@ void World::remove(ItemId id) {
 
 void World::update(ItemId id, const Rect& r) {
   if (observer_ && !observer_->busy()) [[unlikely]] {
-    return observed(*observer_, [&] { update(id, r); }, [&] { observer_->updated(id, r); });
+    return observed(
+        *observer_, [&] { update(id, r); }, [&] { observer_->updated(id, r); });
   }
   slot(id, kUpdate);
   validateRect(r, kUpdate);
@@ -303,13 +305,12 @@ std::vector<std::uint32_t> World::cellItems(Cell c) const {
 }
 
 std::size_t World::memoryBytes() const {
-  std::size_t bytes = hash_->memoryBytes() + slots_.capacity() * sizeof(Slot) +
-                      freeSlots_.capacity() * sizeof(std::uint32_t) +
-                      stamp_.capacity() * sizeof(std::uint32_t) +
-                      orders_.capacity() * sizeof(std::uint64_t) +
-                      collisions_.capacity() * sizeof(Collision) +
-                      (excluded_.capacity() + queryScratch_.capacity()) * sizeof(std::uint32_t) +
-                      responses_.capacity() * sizeof(NamedResponse);
+  std::size_t bytes =
+      hash_->memoryBytes() + slots_.capacity() * sizeof(Slot) +
+      freeSlots_.capacity() * sizeof(std::uint32_t) + stamp_.capacity() * sizeof(std::uint32_t) +
+      orders_.capacity() * sizeof(std::uint64_t) + collisions_.capacity() * sizeof(Collision) +
+      (excluded_.capacity() + queryScratch_.capacity()) * sizeof(std::uint32_t) +
+      candidates_.capacity() * sizeof(Candidate) + responses_.capacity() * sizeof(NamedResponse);
   // A std::map node: the value and three pointers and a colour, rounded up by the allocator.
   bytes += extents_.size() * (sizeof(std::pair<const double, std::size_t>) + 4 * sizeof(void*));
   return bytes;
@@ -410,8 +411,9 @@ bool before(const Rect& r, Vec2 goal, const Sweep& a, const Rect& ra, const Swee
 
 }  // namespace
 
-bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
-                     MoveTrace* trace, Collision& best) const {
+template <class Visit>
+bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
+                          Filter filter, MoveTrace* trace, Collision& best, Visit&& visit) const {
   const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
   // The leader so far, kept small: the Collision is filled once, for the winner.
   bool found = false;
@@ -419,44 +421,41 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
   ItemId leadId;
   Rect leadRect;
   ResponseId leadResponse = response::slide;
-  // Only what meets the move's bounding box can be hit: four compares before the exact test.
-  const Rect hull = unite(r, r.at(goal));
+  // Only what meets the move's bounding box (hull) can be hit: four compares before the exact
+  // test.
   // A diagonal leg sweeps a hexagon, not its bounding box: an obstacle beyond a slanted side is
   // separated along the leg's normal n, on which the moving rect's shadow never changes. One
   // interval test rejects it before the exact sweep; it rejects only by more than the rounding
   // of the projections, so it never drops a hit.
   const Slant slant(r, goal);
-  forEachCandidate(self, r, goal, hull, broad, trace,
-                   [&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect) {
-                     const ItemId otherId{other, generation};
-                     if (trace) trace->candidates.push_back(otherId);
-                     if (!overlaps(hull, otherRect) || slant.separates(otherRect)) return;
-                     if (!excluded_.empty() &&
-                         std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) {
-                       return;
-                     }
-                     const Sweep s = sweepRect(r, goal, otherRect);
-                     if (s.kind == SweepKind::miss) return;
-                     // Add order breaks exact ties only, so the slots (a cache miss each) are read
-                     // only then.
-                     if (found && !before(r, goal, s, otherRect, lead, leadRect, [&] {
-                           return orders_[other] < orders_[leadId.index];
-                         })) {
-                       return;
-                     }
-                     const ResponseId resp = filter(selfId, otherId);
-                     if (trace) trace->answers.push_back({otherId, resp});
-                     if (resp == response::ignore) return;
-                     if (resp >= responses_.size()) {
-                       fail(kMove, "filter returned response " + std::to_string(resp) +
-                                       ", which is not registered");
-                     }
-                     lead = s;
-                     leadId = otherId;
-                     leadRect = otherRect;
-                     leadResponse = resp;
-                     found = true;
-                   });
+  visit([&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect) {
+    const ItemId otherId{other, generation};
+    if (trace) trace->candidates.push_back(otherId);
+    if (!overlaps(hull, otherRect) || slant.separates(otherRect)) return;
+    if (!excluded_.empty() &&
+        std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) {
+      return;
+    }
+    const Sweep s = sweepRect(r, goal, otherRect);
+    if (s.kind == SweepKind::miss) return;
+    // Add order breaks exact ties only, so the slots (a cache miss each) are read
+    // only then.
+    if (found && !before(r, goal, s, otherRect, lead, leadRect,
+                         [&] { return orders_[other] < orders_[leadId.index]; })) {
+      return;
+    }
+    const ResponseId resp = filter(selfId, otherId);
+    if (trace) trace->answers.push_back({otherId, resp});
+    if (resp == response::ignore) return;
+    if (resp >= responses_.size()) {
+      fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
+    }
+    lead = s;
+    leadId = otherId;
+    leadRect = otherRect;
+    leadResponse = resp;
+    found = true;
+  });
   if (!found) return false;
   best.item = selfId;
   best.other = leadId;
@@ -472,43 +471,24 @@ bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter
   return true;
 }
 
-// Most moves in a crowd meet nothing: when every other item whose rect meets the move's
-// bounding box is ignored by the filter, the full path (legs, responses, the exact sweep) would
-// find no hit and end at the goal, so one scan of the few cells of that box decides it. The
-// filter may be asked about pairs the full path would not have asked about (it must be a pure
-// function of the pair, as the full path already asks in an order that depends on the cells).
-// Longer moves take the full path, whose swept walk reads fewer cells.
-bool World::reachesNothing(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter) const {
-  // The box by its edges, without rounding it into a Rect. Items are registered in the cells
-  // their half-open extent meets, so an item whose interior meets the box shares one of the
-  // cells the half-open box meets: those are all the cells to read.
-  const double x0 = std::min(r.x, goal.x), y0 = std::min(r.y, goal.y);
-  const double x1 = std::max(r.right(), goal.x + r.w), y1 = std::max(r.bottom(), goal.y + r.h);
-  const detail::SpatialHash& hash = *hash_;
-  const CellRange all = grid_.cellsHolding(x0, y0, x1, y1);
-  const CellRange& used = hash.liveBox();
-  const CellRange box{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
-                      std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
-  if (box.count() > 4) return false;
-  for (std::int64_t cy = box.y0; cy <= box.y1; ++cy) {
-    for (std::int64_t cx = box.x0; cx <= box.x1; ++cx) {
-      for (const detail::HashEntry& e : hash.items({cx, cy})) {
-        const Rect& o = e.rect;
-        if (!(o.x < x1 && x0 < o.right() && o.y < y1 && y0 < o.bottom()) || e.slot() == self) {
-          continue;
-        }
-        if (filter(ItemId{self, slots_[self].generation}, ItemId{e.slot(), e.generation}) !=
-            response::ignore) {
-          return false;
-        }
-      }
-    }
-  }
-  return true;
+bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
+                     MoveTrace* trace, Collision& best) const {
+  const Rect hull = unite(r, r.at(goal));
+  return firstHitAmong(self, r, goal, hull, filter, trace, best, [&](const auto& f) {
+    forEachCandidate(self, r, goal, hull, broad, trace, f);
+  });
+}
+
+bool World::firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
+                       Vec2 goal, Filter filter, Collision& best) const {
+  return firstHitAmong(self, r, goal, unite(r, r.at(goal)), filter, nullptr, best,
+                       [&](const auto& f) {
+                         for (const Candidate& c : candidates) f(c.slot, c.generation, c.rect);
+                       });
 }
 
 MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
-                      const MoveOptions& o) const {
+                      const MoveOptions& o, const Box* box) const {
   MoveTrace* trace = activeTrace(o.trace);
   collisions_.clear();
   excluded_.clear();
@@ -528,13 +508,16 @@ MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filte
       break;
     }
     if (trace) trace->legs.push_back({r.at(start), goal});
-    if (!firstHit(self, r.at(start), goal, filter, o.broad, trace, c)) break;
+    const bool hit = box != nullptr && box->holds(r.at(start), goal)
+                         ? firstHitIn(candidates_, self, r.at(start), goal, filter, c)
+                         : firstHit(self, r.at(start), goal, filter, o.broad, trace, c);
+    if (!hit) break;
     const Leg next = respond(c, goal);
     // A response of the user's must hand back a leg the world can sweep: refuse it before
     // anything moves, naming the response.
     if (!isFinite(next.start) || !isFinite(next.goal) || !grid_.fits(r.at(next.start)) ||
-        !grid_.fits(r.at(next.goal)) || !withinMagnitude(next.start) ||
-        !withinMagnitude(next.goal)) [[unlikely]] {
+        !grid_.fits(r.at(next.goal)) || !withinMagnitude(next.start) || !withinMagnitude(next.goal))
+        [[unlikely]] {
       fail(kMove, "response '" + std::string(responseName(c.response)) + "' returned the leg {" +
                       formatNumber(next.start.x) + ", " + formatNumber(next.start.y) + "} -> {" +
                       formatNumber(next.goal.x) + ", " + formatNumber(next.goal.y) +
@@ -556,8 +539,9 @@ MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filte
 MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& options) const {
   if (observer_ && !observer_->busy()) [[unlikely]] {
     const WorldObserver::Watched watched{filter, *observer_};
-    return observed(*observer_, [&] { return check(id, goal, Filter(watched), options); },
-                    [&](const MoveResult& r) { observer_->checked(id, goal, options, r); });
+    return observed(
+        *observer_, [&] { return check(id, goal, Filter(watched), options); },
+        [&](const MoveResult& r) { observer_->checked(id, goal, options, r); });
   }
   const Slot& s = slot(id, "tv::World::check");
   validateGoal(s.rect, goal, "tv::World::check");
@@ -568,36 +552,80 @@ MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& 
 MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& options) {
   if (observer_ && !observer_->busy()) [[unlikely]] {
     const WorldObserver::Watched watched{filter, *observer_};
-    return observed(*observer_, [&] { return move(id, goal, Filter(watched), options); },
-                    [&](const MoveResult& r) { observer_->moved(id, goal, options, r); });
+    return observed(
+        *observer_, [&] { return move(id, goal, Filter(watched), options); },
+        [&](const MoveResult& r) { observer_->moved(id, goal, options, r); });
   }
   const Slot& s = slot(id, kMove);
   validateGoal(s.rect, goal, kMove);
   validateOptions(options, kMove);
   if (activeTrace(options.trace) == nullptr) {
+    // Most moves in a crowd meet nothing: when every other item that meets the move's bounding
+    // box is ignored by the filter, the full path would find no hit and end at the goal, so one
+    // scan of the box's few cells decides it. When something kept is in reach, the legs of the
+    // built-in responses (bounce aside) stay inside that box, so they are swept against the items
+    // that meet it, gathered from the same cells, instead of walking the cells again. The filter
+    // may be asked about pairs the full path would not have asked about (it must be a pure
+    // function of the pair, as the full path already asks in an order that depends on the
+    // cells). Longer moves take the full path, whose swept walk reads fewer cells.
     const Rect to = s.rect.at(goal);
+    const Box box{std::min(s.rect.x, to.x), std::min(s.rect.y, to.y),
+                  std::max(s.rect.right(), to.right()), std::max(s.rect.bottom(), to.bottom())};
     detail::SpatialHash& hash = *hash_;
+    const auto kept = [&](const detail::HashEntry& e) {
+      return box.meets(e.rect) && e.slot() != id.index &&
+             filter(id, ItemId{e.slot(), e.generation}) != response::ignore;
+    };
+    const auto gather = [&](const detail::HashEntry& e) {
+      if (!box.meets(e.rect) || e.slot() == id.index) return false;
+      if (e.shared()) {  // in several of the cells: list it once
+        for (const Candidate& c : candidates_)
+          if (c.slot == e.slot()) return false;
+      }
+      candidates_.push_back({e.rect, e.slot(), e.generation});
+      return false;
+    };
+    bool narrow = false;
     if (hash.staysInCells(id.index, to)) {
-      // The move's box lies in the cells the item is in: read them without finding them.
-      const double x0 = std::min(s.rect.x, to.x), y0 = std::min(s.rect.y, to.y);
-      const double x1 = std::max(s.rect.right(), to.right());
-      const double y1 = std::max(s.rect.bottom(), to.bottom());
-      const bool reaches = hash.anyInOwnCells(id.index, [&](const detail::HashEntry& e) {
-        const Rect& o = e.rect;
-        return o.x < x1 && x0 < o.right() && o.y < y1 && y0 < o.bottom() &&
-               e.slot() != id.index &&
-               filter(id, ItemId{e.slot(), e.generation}) != response::ignore;
-      });
-      if (!reaches) {
+      // The box lies in the cells the item is in: read them without finding them.
+      if (!hash.anyInOwnCells(id.index, kept)) {
         collisions_.clear();
         hash.rewrite(id.index, to);
         slots_[id.index].rect = to;
         return {goal, {}};
       }
-    } else if (reachesNothing(id.index, s.rect, goal, filter)) {
-      collisions_.clear();
-      place(id.index, to);
-      return {goal, {}};
+      candidates_.clear();
+      (void)hash.anyInOwnCells(id.index, gather);
+      narrow = true;
+    } else {
+      // Items are registered in the cells their half-open extent meets, so an item whose
+      // interior meets the box shares one of the cells the half-open box meets.
+      const CellRange all = grid_.cellsHolding(box.x0, box.y0, box.x1, box.y1);
+      const CellRange& used = hash.liveBox();
+      const CellRange cells{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
+                            std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
+      const auto any = [&](const auto& f) {
+        for (std::int64_t cy = cells.y0; cy <= cells.y1; ++cy)
+          for (std::int64_t cx = cells.x0; cx <= cells.x1; ++cx)
+            for (const detail::HashEntry& e : hash.items({cx, cy}))
+              if (f(e)) return true;
+        return false;
+      };
+      if (cells.count() <= 4) {
+        if (!any(kept)) {
+          collisions_.clear();
+          place(id.index, to);
+          return {goal, {}};
+        }
+        candidates_.clear();
+        (void)any(gather);
+        narrow = true;
+      }
+    }
+    if (narrow) {
+      const MoveResult result = run(id.index, s.rect, goal, filter, options, &box);
+      place(id.index, s.rect.at(result.position));
+      return result;
     }
   }
   const MoveResult result = run(id.index, s.rect, goal, filter, options);
@@ -609,8 +637,9 @@ MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
                           const MoveOptions& options) const {
   if (observer_ && !observer_->busy()) [[unlikely]] {
     const WorldObserver::Watched watched{filter, *observer_};
-    return observed(*observer_, [&] { return project(r, goal, Filter(watched), options); },
-                    [&](const MoveResult& m) { observer_->projected(r, goal, options, m); });
+    return observed(
+        *observer_, [&] { return project(r, goal, Filter(watched), options); },
+        [&](const MoveResult& m) { observer_->projected(r, goal, options, m); });
   }
   validateRect(r, "tv::World::project");
   validateGoal(r, goal, "tv::World::project");
@@ -668,8 +697,9 @@ ResponseId World::responseId(std::string_view name) const {
 
 void World::queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip) const {
   if (observer_ && !observer_->busy()) [[unlikely]] {
-    return observed(*observer_, [&] { queryRect(r, out, skip); },
-                    [&] { observer_->queriedRect(r, skip, out); });
+    return observed(
+        *observer_, [&] { queryRect(r, out, skip); },
+        [&] { observer_->queriedRect(r, skip, out); });
   }
   constexpr std::string_view where = "tv::World::queryRect";
   requireFinite(where, "x", r.x);
@@ -705,8 +735,9 @@ std::vector<ItemId> World::queryRect(const Rect& r, ItemId skip) const {
 bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
   if (observer_ && !observer_->busy()) [[unlikely]] {
     const WorldObserver::Watched watched{filter, *observer_};
-    return observed(*observer_, [&] { return anyOverlap(r, skip, Filter(watched)); },
-                    [&](bool any) { observer_->askedOverlap(r, skip, any); });
+    return observed(
+        *observer_, [&] { return anyOverlap(r, skip, Filter(watched)); },
+        [&](bool any) { observer_->askedOverlap(r, skip, any); });
   }
   if (!isFinite(r) || r.w < 0 || r.h < 0 || !inRange(r.x) || !inRange(r.y) || !inRange(r.w) ||
       !inRange(r.h) || !grid_.fits(r)) {
@@ -727,8 +758,9 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
 
 std::vector<ItemId> World::queryPoint(Vec2 p) const {
   if (observer_ && !observer_->busy()) [[unlikely]] {
-    return observed(*observer_, [&] { return queryPoint(p); },
-                    [&](const std::vector<ItemId>& found) { observer_->queriedPoint(p, found); });
+    return observed(
+        *observer_, [&] { return queryPoint(p); },
+        [&](const std::vector<ItemId>& found) { observer_->queriedPoint(p, found); });
   }
   constexpr std::string_view where = "tv::World::queryPoint";
   requireFinite(where, "x", p.x);
@@ -752,10 +784,9 @@ std::vector<ItemId> World::queryPoint(Vec2 p) const {
 
 std::vector<SegmentHit> World::querySegment(Vec2 a, Vec2 b) const {
   if (observer_ && !observer_->busy()) [[unlikely]] {
-    return observed(*observer_, [&] { return querySegment(a, b); },
-                    [&](const std::vector<SegmentHit>& hits) {
-                      observer_->queriedSegment(a, b, hits);
-                    });
+    return observed(
+        *observer_, [&] { return querySegment(a, b); },
+        [&](const std::vector<SegmentHit>& hits) { observer_->queriedSegment(a, b, hits); });
   }
   constexpr std::string_view where = "tv::World::querySegment";
   requireFinite(where, "a.x", a.x);
@@ -837,8 +868,8 @@ void World::restore(const WorldState& s) {
                     formatNumber(grid_.cellSize()));
   }
   if (s.responses.size() != responses_.size()) {
-    fail(where, "the state has " + std::to_string(s.responses.size()) +
-                    " responses, this world " + std::to_string(responses_.size()) +
+    fail(where, "the state has " + std::to_string(s.responses.size()) + " responses, this world " +
+                    std::to_string(responses_.size()) +
                     " (register the user responses first, in the same order)");
   }
   for (std::size_t i = 0; i < responses_.size(); ++i) {

@@ -17,6 +17,7 @@
 ///   cell sizes in [2^-485, 2^500], rects with an interior; beyond it input is refused.
 /// Not thread-safe: queries reuse internal scratch buffers.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -71,10 +72,11 @@ struct WorldState {
     bool alive = false;
   };
   double cellSize = 64.0;
-  std::vector<Slot> slots;               ///< by slot index
-  std::vector<std::uint32_t> freeSlots;  ///< reused from the back; a dead slot not listed is retired
-  std::uint64_t nextOrder = 0;           ///< add order of the next add
-  std::vector<std::string> responses;    ///< response names by ResponseId, built-ins first
+  std::vector<Slot> slots;  ///< by slot index
+  std::vector<std::uint32_t>
+      freeSlots;                       ///< reused from the back; a dead slot not listed is retired
+  std::uint64_t nextOrder = 0;         ///< add order of the next add
+  std::vector<std::string> responses;  ///< response names by ResponseId, built-ins first
 };
 
 /// An item whose open interior meets a query segment, with where the segment enters and exits.
@@ -247,7 +249,8 @@ class World {
     refuseGoal(r, goal, where);
   }
   void validateOptions(const MoveOptions& o, std::string_view where) const {
-    if (o.maxResponses < 1 || o.maxResponses > 4096) [[unlikely]] refuseOptions(o, where);
+    if (o.maxResponses < 1 || o.maxResponses > 4096) [[unlikely]]
+      refuseOptions(o, where);
   }
   [[noreturn]] void refuseItem(ItemId id, std::string_view where) const;
   // Throws naming what is wrong; returns when nothing is (the fast test is only a shortcut).
@@ -256,14 +259,39 @@ class World {
 
   std::uint32_t newSlot();
   ItemId fill(std::uint32_t index, const Rect& r);  // add into a free slot, validated
-  void place(std::uint32_t index, const Rect& r);  // update without validation
+  void place(std::uint32_t index, const Rect& r);   // update without validation
   void visitOccupiedCells(void (*fn)(void*, Cell, std::size_t), void* ctx) const;
   void addExtent(const Rect& r);
   void dropExtent(const Rect& r);
 
-  bool reachesNothing(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter) const;
-  MoveResult run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
-                 const MoveOptions& o) const;
+  // A move's bounding box by its edges (not rounded out into a Rect).
+  struct Box {
+    double x0, y0, x1, y1;
+    [[nodiscard]] bool meets(const Rect& o) const {
+      return o.x < x1 && x0 < o.right() && o.y < y1 && y0 < o.bottom();
+    }
+    [[nodiscard]] bool holds(const Rect& r, Vec2 goal) const {
+      return std::min(r.x, goal.x) >= x0 && std::min(r.y, goal.y) >= y0 &&
+             std::max(r.right(), goal.x + r.w) <= x1 && std::max(r.bottom(), goal.y + r.h) <= y1;
+    }
+  };
+  // With `box`, candidates_ holds every item that meets it: a leg inside it is swept against
+  // those alone.
+  MoveResult run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, const MoveOptions& o,
+                 const Box* box = nullptr) const;
+  // An item that may be hit, as the spatial hash holds it.
+  struct Candidate {
+    Rect rect;
+    std::uint32_t slot;
+    std::uint32_t generation;
+  };
+  // The first hit of a leg among every item the spatial hash gives for its cells, or among a
+  // list known to hold every item that meets the leg's hull.
+  template <class Visit>
+  bool firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull, Filter filter,
+                     MoveTrace* trace, Collision& best, Visit&& visit) const;
+  bool firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
+                  Vec2 goal, Filter filter, Collision& best) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
                 MoveTrace* trace, Collision& best) const;
   /// Calls f(slot, generation, const Rect&) once for each item registered in the cells the
@@ -295,6 +323,7 @@ class World {
   mutable std::vector<Collision> collisions_;
   mutable std::vector<std::uint32_t> excluded_;
   mutable std::vector<std::uint32_t> queryScratch_;
+  mutable std::vector<Candidate> candidates_;
 };
 
 }  // namespace tv
