@@ -110,7 +110,9 @@ struct Batch::Search {
   std::vector<std::uint64_t> order;   // add order: the tie-break
   std::vector<Rect> start;            // where it began, to undo a step whose last write fails
   std::vector<Collision> staticHit;   // its first static hit, for its current version
+  std::vector<Rect> clear;            // a hull that meets no static it may hit (or empty)
   std::vector<Rect> hulls;            // its loose hull, while building the grid
+  std::vector<std::uint32_t> visit;   // the bodies in spatial order (see BatchHullGrid)
   std::vector<std::uint32_t> seen;    // the validation's duplicate check, by slot
   std::uint32_t seenEpoch = 0;
   std::vector<std::uint32_t> bodyBySlot;  // world slot -> body, kNoBody for the rest
@@ -143,8 +145,12 @@ struct Batch::Search {
     return e.pair && body(e.b).version != e.vb;
   }
 
+  // The path's bounding box, loosened (so its own rounding does not matter).
   static Rect looseHull(const Body& b) {
-    return detail::BatchHullGrid::loosen(unite(b.rect, b.rect.at(b.goal)));
+    const double x0 = std::min(b.rect.x, b.goal.x), y0 = std::min(b.rect.y, b.goal.y);
+    const double x1 = std::max(b.rect.x, b.goal.x) + b.rect.w;
+    const double y1 = std::max(b.rect.y, b.goal.y) + b.rect.h;
+    return detail::BatchHullGrid::loosen({x0, y0, x1 - x0, y1 - y0});
   }
 
   // Against the world, bodies see only what is not in the batch (bodies meet by relative
@@ -163,8 +169,19 @@ struct Batch::Search {
     if (b.goal == b.rect.position()) return;
     asking = i;
     const auto answer = [this](ItemId, ItemId other) { return staticAnswer(other); };
-    // Nothing whose interior meets the path's hull: no hit, decided without the sweep.
-    if (!world->anyOverlap(unite(b.rect, b.rect.at(b.goal)), {}, Filter(answer))) return;
+    // Nothing whose interior meets the path's hull: no hit, decided without the sweep. A hull
+    // inside one already found clear is clear too (what the filter sees can only shrink as
+    // pairs cross), and a slide or touch keeps a body inside its first hull.
+    const Rect hull = unite(b.rect, b.rect.at(b.goal));
+    const Rect& was = clear[i];
+    if (hull.x >= was.x && hull.y >= was.y && hull.right() <= was.right() &&
+        hull.bottom() <= was.bottom()) {
+      return;
+    }
+    if (!world->anyOverlap(hull, {}, Filter(answer))) {
+      clear[i] = hull;
+      return;
+    }
     const MoveResult r =
         world->project(b.rect, b.goal, Filter(answer), {BroadPhase::swept, nullptr, 1});
     if (r.collisions.empty()) return;
@@ -185,8 +202,7 @@ struct Batch::Search {
     p.from = std::max(a.t0, b.t0);
     p.pa = pathAt(a.rect, a.goal, a.t0, p.from);
     p.pb = pathAt(b.rect, b.goal, b.t0, p.from);
-    const Vec2 da = a.goal - p.pa, db = b.goal - p.pb;
-    p.sweep = sweepRect(a.rect.at(p.pa), p.pa + (da - db), b.rect.at(p.pb));
+    p.sweep = sweepRect(a.rect.at(p.pa), p.pa + ((a.goal - p.pa) - (b.goal - p.pb)), b.rect.at(p.pb));
     p.hit = p.sweep.kind != SweepKind::miss;
     p.t = p.from + std::max(p.sweep.ti, 0.0) * (1.0 - p.from);
     return p;
@@ -196,21 +212,24 @@ struct Batch::Search {
   // at least does not ignore the other.
   void findPair(std::uint32_t i, std::uint32_t j) {
     if (crossed.contains(pairKey(i, j))) return;
-    const Body& bi = body(i);
-    const Body& bj = body(j);
-    const double from = std::max(bi.t0, bj.t0);
-    const Rect ri = bi.rect.at(pathAt(bi.rect, bi.goal, bi.t0, from));
-    const Rect rj = bj.rect.at(pathAt(bj.rect, bj.goal, bj.t0, from));
-    if (!overlaps(unite(ri, bi.rect.at(bi.goal)), unite(rj, bj.rect.at(bj.goal)))) return;
-    const Body& first = order[i] < order[j] ? bi : bj;
-    const Body& second = order[i] < order[j] ? bj : bi;
-    if ((*filter)(first.item, second.item) == response::ignore &&
-        (*filter)(second.item, first.item) == response::ignore) {
+    PairSweep p;
+    p.a = order[i] < order[j] ? i : j;
+    p.b = p.a == i ? j : i;
+    const Body& a = body(p.a);
+    const Body& b = body(p.b);
+    p.from = std::max(a.t0, b.t0);
+    p.pa = pathAt(a.rect, a.goal, a.t0, p.from);
+    p.pb = pathAt(b.rect, b.goal, b.t0, p.from);
+    const Rect ra = a.rect.at(p.pa), rb = b.rect.at(p.pb);
+    if (!overlaps(unite(ra, a.rect.at(a.goal)), unite(rb, b.rect.at(b.goal)))) return;
+    if ((*filter)(a.item, b.item) == response::ignore &&
+        (*filter)(b.item, a.item) == response::ignore) {
       return;
     }
-    const PairSweep p = sweepPair(i, j);
-    if (!p.hit) return;
-    push({p.t, order[p.a], order[p.b], p.a, p.b, body(p.a).version, body(p.b).version, true});
+    const Sweep s = sweepRect(ra, p.pa + ((a.goal - p.pa) - (b.goal - p.pb)), rb);
+    if (s.kind == SweepKind::miss) return;
+    const double t = p.from + std::max(s.ti, 0.0) * (1.0 - p.from);
+    push({t, order[p.a], order[p.b], p.a, p.b, a.version, b.version, true});
   }
 
   // The bodies in `changed` took a new path: their static hits and their pairs with every hull
@@ -327,13 +346,13 @@ struct Batch::Search {
   // Runs the tick's events; false when maxEvents ran out first, with `last` the instant of the
   // last one that ran.
   bool run(int maxEvents, double& last) {
-    const std::size_t n = bodies->size();
     hulls.clear();
     for (const Body& b : *bodies) hulls.push_back(looseHull(b));
     grid.build(hulls);
-    for (std::uint32_t i = 0; i < n; ++i) findStatic(i);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      grid.forEachNear(i, hulls[i], [&](std::uint32_t j) {
+    grid.spatialOrder(visit);
+    for (const std::uint32_t i : visit) findStatic(i);
+    for (const std::uint32_t i : visit) {
+      grid.forEachNear(i, [&](std::uint32_t j) {
         if (j > i && meets(hulls[i], hulls[j])) findPair(i, j);
       });
     }
@@ -393,8 +412,10 @@ void Batch::step(World& world, std::span<const BatchMove> moves, Filter filter, 
     std::fill(s.seen.begin(), s.seen.end(), 0u);
     s.seenEpoch = 1;
   }
+  s.start.clear();
   for (std::size_t i = 0; i < moves.size(); ++i) {
     const Rect r = world.rect(moves[i].item);  // throws on unknown or removed items
+    s.start.push_back(r);
     requireFinite(kWhere, "goal.x", moves[i].goal.x);
     requireFinite(kWhere, "goal.y", moves[i].goal.y);
     requireInRange(kWhere, "goal.x", moves[i].goal.x);
@@ -417,15 +438,15 @@ void Batch::step(World& world, std::span<const BatchMove> moves, Filter filter, 
   s.filter = &filter;
   s.bodies = &bodies_;
   s.order.clear();
-  s.start.clear();
   s.events.clear();
   s.owner.clear();
   s.queue.clear();
   s.crossed.clear();
   s.staticHit.resize(moves.size());
-  for (const BatchMove& m : moves) {
-    bodies_.push_back({m.item, world.rect(m.item), m.goal});
-    s.start.push_back(bodies_.back().rect);
+  s.clear.assign(moves.size(), Rect{0, 0, -1, -1});  // contains nothing
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const BatchMove& m = moves[i];
+    bodies_.push_back({m.item, s.start[i], m.goal});
     s.order.push_back(world.order(m.item));
     if (s.bodyBySlot.size() <= m.item.index) s.bodyBySlot.resize(m.item.index + 1, kNoBody);
     s.bodyBySlot[m.item.index] = static_cast<std::uint32_t>(bodies_.size() - 1);
@@ -444,11 +465,13 @@ void Batch::step(World& world, std::span<const BatchMove> moves, Filter filter, 
   // back those made before it.
   double last = 0;
   const bool finished = s.run(maxEvents, last);
+  for (Body& b : bodies_) {
+    // Out of events: everyone stays where they are at the last event's instant.
+    b.rect = b.rect.at(finished ? b.goal : pathAt(b.rect, b.goal, b.t0, last));
+  }
   std::size_t written = 0;
   try {
-    for (Body& b : bodies_) {
-      // Out of events: everyone stays where they are at the last event's instant.
-      b.rect = b.rect.at(finished ? b.goal : pathAt(b.rect, b.goal, b.t0, last));
+    for (const Body& b : bodies_) {
       world.update(b.item, b.rect);
       ++written;
     }

@@ -9,7 +9,7 @@ namespace {
 
 // A grid of at most this many cells per body: enough that a crowd's bodies share a cell with
 // only their neighbours, few enough that building it costs about what registering them does.
-constexpr double kCellsPerBody = 2.0;
+constexpr double kCellsPerBody = 1.0;
 constexpr std::int32_t kMaxSide = 1 << 14;
 
 }  // namespace
@@ -45,8 +45,9 @@ void BatchHullGrid::build(std::span<const Rect> hulls) {
   }
   const double n = static_cast<double>(hulls.size());
   const double width = right - left, height = bottom - top;
-  // Cells about as large as a typical hull, and not more of them than kCellsPerBody a body.
-  double cell = std::max(extent / n, std::sqrt(width * height / (kCellsPerBody * n)));
+  // Cells about twice as large as a typical hull (most hulls then meet one to four cells, two
+  // on average), and not more of them than kCellsPerBody a body.
+  double cell = std::max(2 * extent / n, std::sqrt(width * height / (kCellsPerBody * n)));
   if (!(cell > 0) || !std::isfinite(cell)) cell = std::max(width, height);
   if (!(cell > 0) || !std::isfinite(cell)) cell = 1;
   const auto side = [&](double length) {
@@ -113,6 +114,16 @@ void BatchHullGrid::update(std::uint32_t i, const Rect& hull) {
   erase(i);
   hulls_[i] = hull;
   insert(i);
+}
+
+void BatchHullGrid::spatialOrder(std::vector<std::uint32_t>& out) {
+  out.clear();
+  for (std::int32_t cy = 0; cy < ny_; ++cy) {
+    for (std::int32_t cx = 0; cx < nx_; ++cx) {
+      for (const std::uint32_t j : cell(cx, cy))
+        if (ranges_[j].x0 == cx && ranges_[j].y0 == cy) out.push_back(j);
+    }
+  }
 }
 
 std::uint32_t BatchHullGrid::nextEpoch() {

@@ -35,7 +35,23 @@ class BatchHullGrid {
   /// Calls f(body) once for every body other than `self` registered in a cell that `r` meets.
   template <class F>
   void forEachNear(std::uint32_t self, const Rect& r, F&& f) {
-    const Range c = rangeOf(r);
+    forEachIn(self, rangeOf(r), f);
+  }
+  /// The same for body i's registered hull.
+  template <class F>
+  void forEachNear(std::uint32_t i, F&& f) {
+    forEachIn(i, ranges_[i], f);
+  }
+  /// Every body once, in the order of the first cell each is registered in: neighbours in
+  /// space come close together, so work done body by body reads memory in spatial order.
+  void spatialOrder(std::vector<std::uint32_t>& out);
+
+ private:
+  struct Range {
+    std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  };
+  template <class F>
+  void forEachIn(std::uint32_t self, const Range& c, F& f) {
     const std::uint32_t epoch = nextEpoch();
     for (std::int32_t cy = c.y0; cy <= c.y1; ++cy) {
       for (std::int32_t cx = c.x0; cx <= c.x1; ++cx) {
@@ -47,11 +63,6 @@ class BatchHullGrid {
       }
     }
   }
-
- private:
-  struct Range {
-    std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
-  };
   [[nodiscard]] Range rangeOf(const Rect& r) const;
   std::vector<std::uint32_t>& cell(std::int32_t cx, std::int32_t cy) {
     return cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) +
