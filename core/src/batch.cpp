@@ -89,12 +89,14 @@ struct Event {
 // The queue's order, as a "runs after" for a min-heap: time, then statics before pairs, then
 // the sides' add orders. Valid events never compare equal, so which one runs first is never
 // left to the order they were found in.
-bool runsAfter(const Event& x, const Event& y) {
-  if (x.t != y.t) return x.t > y.t;
-  if (x.pair != y.pair) return x.pair;
-  if (x.first != y.first) return x.first > y.first;
-  return x.second > y.second;
-}
+struct RunsAfter {
+  bool operator()(const Event& x, const Event& y) const {
+    if (x.t != y.t) return x.t > y.t;
+    if (x.pair != y.pair) return x.pair;
+    if (x.first != y.first) return x.first > y.first;
+    return x.second > y.second;
+  }
+};
 
 }  // namespace
 
@@ -120,7 +122,7 @@ struct Batch::Search {
   std::vector<Collision> events;  // raw, in the order they ran, with the body in `owner`
   std::vector<std::uint32_t> owner;
   std::vector<std::size_t> counts;
-  std::vector<Event> queue;  // a heap by runsAfter
+  std::vector<Event> queue;  // a heap by RunsAfter
   KeySet crossed;
   detail::BatchHullGrid grid;
   std::uint32_t asking = 0;  // the body whose static hit is being searched
@@ -137,7 +139,7 @@ struct Batch::Search {
 
   void push(const Event& e) {
     queue.push_back(e);
-    std::push_heap(queue.begin(), queue.end(), runsAfter);
+    std::push_heap(queue.begin(), queue.end(), RunsAfter{});
   }
 
   [[nodiscard]] bool stale(const Event& e) {
@@ -360,12 +362,12 @@ struct Batch::Search {
     while (!queue.empty()) {
       const Event e = queue.front();
       if (stale(e)) {
-        std::pop_heap(queue.begin(), queue.end(), runsAfter);
+        std::pop_heap(queue.begin(), queue.end(), RunsAfter{});
         queue.pop_back();
         continue;
       }
       if (ran == maxEvents) return false;
-      std::pop_heap(queue.begin(), queue.end(), runsAfter);
+      std::pop_heap(queue.begin(), queue.end(), RunsAfter{});
       queue.pop_back();
       ++ran;
       last = e.t;

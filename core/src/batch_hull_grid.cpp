@@ -70,20 +70,6 @@ void BatchHullGrid::build(std::span<const Rect> hulls) {
   for (std::uint32_t i = 0; i < hulls.size(); ++i) insert(i);
 }
 
-std::int32_t BatchHullGrid::column(double x) const {
-  const double c = std::floor((x - x0_) * inverseX_);
-  return static_cast<std::int32_t>(std::clamp(c, 0.0, static_cast<double>(nx_ - 1)));
-}
-
-std::int32_t BatchHullGrid::row(double y) const {
-  const double c = std::floor((y - y0_) * inverseY_);
-  return static_cast<std::int32_t>(std::clamp(c, 0.0, static_cast<double>(ny_ - 1)));
-}
-
-BatchHullGrid::Range BatchHullGrid::rangeOf(const Rect& r) const {
-  return {column(r.x), row(r.y), column(r.right()), row(r.bottom())};
-}
-
 void BatchHullGrid::insert(std::uint32_t i) {
   const Range c = rangeOf(hulls_[i]);
   ranges_[i] = c;

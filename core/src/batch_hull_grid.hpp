@@ -12,6 +12,7 @@
 // - A body whose new path stays inside its registered hull keeps it (slide and touch never
 //   leave it); only one that leaves it is registered again.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -63,13 +64,22 @@ class BatchHullGrid {
       }
     }
   }
-  [[nodiscard]] Range rangeOf(const Rect& r) const;
+  // Clamped first, so the truncation is a floor (and never overflows).
+  [[nodiscard]] std::int32_t column(double x) const {
+    const double c = std::clamp((x - x0_) * inverseX_, 0.0, static_cast<double>(nx_ - 1));
+    return static_cast<std::int32_t>(c);
+  }
+  [[nodiscard]] std::int32_t row(double y) const {
+    const double c = std::clamp((y - y0_) * inverseY_, 0.0, static_cast<double>(ny_ - 1));
+    return static_cast<std::int32_t>(c);
+  }
+  [[nodiscard]] Range rangeOf(const Rect& r) const {
+    return {column(r.x), row(r.y), column(r.right()), row(r.bottom())};
+  }
   std::vector<std::uint32_t>& cell(std::int32_t cx, std::int32_t cy) {
     return cells_[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx_) +
                   static_cast<std::size_t>(cx)];
   }
-  [[nodiscard]] std::int32_t column(double x) const;
-  [[nodiscard]] std::int32_t row(double y) const;
   void insert(std::uint32_t i);
   void erase(std::uint32_t i);
   std::uint32_t nextEpoch();
