@@ -43,9 +43,9 @@ struct BatchOutcome {
 /// grid over the hulls; events wait in a priority queue, and an event re-examines only the
 /// bodies it changed and their hull neighbours. A tick costs about N·(static search + hull
 /// neighbours) + events·(the same for two bodies)·log N: on bump-crowd (`tv-bench scale`, all
-/// movers sliding against each other) 0.2 M instructions a tick for 100 movers, 2.0 M for 10^3
-/// (~0.4 ms), 33 M for 10^4 (7–10 ms), about a third of it in the world's own queries and the
-/// final World::update of every body.
+/// movers sliding against each other) 0.2 M instructions a tick for 100 movers, 2.1 M for 10^3
+/// (~0.4 ms), 32 M for 10^4 (7 ms on a quiet machine), about a third of it in the world's own
+/// queries and the final World::update of every body.
 class Batch {
  public:
   /// Throws tv::Error on unknown items, duplicates or non-finite goals, changing nothing.
