@@ -124,8 +124,9 @@ Outcome runOne(const Layout& layout, double speed, const Column& column, std::in
   return o;
 }
 
-// tv::Batch costs O(events × movers × candidates) per tick — it is meant for a handful of fast
-// movers — so the crossings (independent of each other) run in groups of 100.
+// The crossings (independent of each other) run in groups of 100: tv::Batch used to cost
+// O(events × movers × candidates) a tick, and the groups stay so the published table measures
+// the same shots.
 Outcome runCell(const Layout& layout, double speed, const Column& column, std::int64_t count,
                 std::uint64_t seed) {
   if (layout.shots != Shots::enemies || count <= 100)

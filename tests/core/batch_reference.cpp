@@ -1,264 +1,185 @@
-// The batch step as it was before its pair search got a broad phase: every event tests every
-// pair of bodies. Kept verbatim (but for its storage, which is local) as the reference the
-// scaled tv::Batch must match bit for bit, ties included.
+// The batch step as its specification reads, with nothing to make it fast: a tick is a loop
+// of "find the earliest event among every body against the world and every pair of bodies,
+// run it". Each body keeps the path it took at its last event (its rect then, that instant
+// t0, its goal at t = 1); a time found for a body or a pair depends on those paths alone.
+// tv::Batch must give the same outcomes bit for bit, ties included.
 #include "batch_reference.hpp"
 
 #include <algorithm>
-#include <string>
-
-#include "tv/error.hpp"
+#include <cstdint>
+#include <set>
+#include <utility>
 
 namespace tv::reference {
 
 namespace {
 
-constexpr std::string_view kWhere = "tv::Batch::step";
-
-std::uint64_t pairKey(std::size_t a, std::size_t b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t{static_cast<std::uint32_t>(a)} << 32) | static_cast<std::uint32_t>(b);
-}
-
-std::uint64_t staticKey(std::size_t body, std::uint32_t slot) {
-  return 0x8000000000000000ull | (std::uint64_t{static_cast<std::uint32_t>(body)} << 32) | slot;
-}
-
 struct Body {
   ItemId item;
-  Rect rect;
-  Vec2 goal;
-  bool stopped = false;
-  std::size_t first = 0, count = 0;
+  Rect rect;  // at t0
+  Vec2 goal;  // at t = 1
+  double t0 = 0;
+  std::uint64_t order = 0;
+};
+
+Vec2 at(const Body& b, double t) {
+  const Vec2 p = b.rect.position();
+  if (t == b.t0 || b.goal == p) return p;
+  return p + (b.goal - p) * ((t - b.t0) / (1.0 - b.t0));
+}
+
+// The least event so far: (t, pair, first order, second order) compared in that order.
+struct Best {
+  bool found = false;
+  double t = 0;
+  bool pair = false;
+  std::uint64_t first = 0, second = 0;
+  std::size_t i = 0, j = 0;  // a pair: i added before j
+  Collision hit;             // a static hit
+  Sweep sweep;               // a pair's
+  double from = 0;
+  Vec2 pi, pj;
+  bool beats(double t2, bool pair2, std::uint64_t first2, std::uint64_t second2) const {
+    if (!found) return true;
+    if (t2 != t) return t2 < t;
+    if (pair2 != pair) return !pair2;
+    return first2 != first ? first2 < first : second2 < second;
+  }
 };
 
 }  // namespace
 
 std::vector<Outcome> batchStep(World& world, std::span<const BatchMove> moves, Filter filter,
-                               int maxEvents) {
-  std::vector<Body> bodies_;
-  std::vector<Collision> events_;
-  std::vector<std::size_t> owner_;
-  std::vector<Collision> collisions_;
-  std::vector<std::uint64_t> crossed_;
-  std::vector<std::uint64_t> order_;
-  std::vector<Rect> startRects_;
-  constexpr std::uint32_t kNoBody = 0xFFFFFFFFu;
-  std::vector<std::uint32_t> bodyBySlot_;
-
-  // Validate everything before changing anything.
-  for (std::size_t i = 0; i < moves.size(); ++i) {
-    const Rect r = world.rect(moves[i].item);  // throws on unknown or removed items
-    requireFinite(kWhere, "goal.x", moves[i].goal.x);
-    requireFinite(kWhere, "goal.y", moves[i].goal.y);
-    if (!world.grid().fits(r.at(moves[i].goal))) {
-      fail(kWhere, "goal {" + formatNumber(moves[i].goal.x) + ", " + formatNumber(moves[i].goal.y) +
-                       "} is too far from the origin for the world's cell size");
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      if (moves[j].item == moves[i].item) {
-        fail(kWhere, "item index " + std::to_string(moves[i].item.index) + " appears twice");
-      }
-    }
-  }
-  if (maxEvents < 1) fail(kWhere, "maxEvents must be >= 1, but was " + std::to_string(maxEvents));
-
-  bodies_.clear();
-  events_.clear();
-  owner_.clear();
-  crossed_.clear();
-  order_.clear();
-  startRects_.clear();
+                               int maxEvents, std::vector<double>* instants) {
+  std::vector<Body> bodies;
+  std::set<std::uint32_t> batchSlots;
   for (const BatchMove& m : moves) {
-    bodies_.push_back({m.item, world.rect(m.item), m.goal});
-    startRects_.push_back(bodies_.back().rect);
-    order_.push_back(world.order(m.item));
-    if (bodyBySlot_.size() <= m.item.index) bodyBySlot_.resize(m.item.index + 1, kNoBody);
-    bodyBySlot_[m.item.index] = static_cast<std::uint32_t>(bodies_.size() - 1);
+    bodies.push_back({m.item, world.rect(m.item), m.goal, 0, world.order(m.item)});
+    batchSlots.insert(m.item.index);
   }
-  // Forget the slots again however this step ends (the map is kept to reuse its memory).
-  const auto bodyOf = [&](ItemId id) -> std::size_t {
-    return id.index < bodyBySlot_.size() && bodyBySlot_[id.index] != kNoBody ? bodyBySlot_[id.index]
-                                                                             : bodies_.size();
-  };
-  // Events at the same instant run in add order (statics before pairs), and a pair is swept
-  // from its earlier-added side: the outcome never depends on the order of `moves`.
-  struct EventKey {
-    bool pair = false;
-    std::uint64_t first = 0, second = 0;
-  };
-  const auto ahead = [](double u, const EventKey& k, double bestU, const EventKey& best) {
-    if (u != bestU) return u < bestU;
-    if (k.pair != best.pair) return !k.pair;
-    return k.first != best.first ? k.first < best.first : k.second < best.second;
-  };
-  const auto crossed = [&](std::uint64_t key) {
-    return std::find(crossed_.begin(), crossed_.end(), key) != crossed_.end();
-  };
-  // Against the world, bodies see only what is not in the batch (bodies meet by relative
-  // motion below) and not already crossed.
-  std::size_t asking = 0;
-  const auto staticFilter = [&](ItemId item, ItemId other) -> ResponseId {
-    if (bodyOf(other) != bodies_.size() || crossed(staticKey(asking, other.index))) {
-      return response::ignore;
-    }
-    return filter(item, other);
-  };
+  std::set<std::pair<std::size_t, std::size_t>> crossedPairs;
+  std::set<std::pair<std::size_t, std::uint32_t>> crossedStatics;
+  std::vector<std::pair<std::size_t, Collision>> events;
 
-  // A throw part way (a filter answer that is not a response) puts every body back.
-  try {
-    bool finished = false;
-    for (int e = 0; e < maxEvents; ++e) {
-      // The earliest event over the rest of the tick; u is the fraction of what remains.
-      double bestU = 2.0;
-      EventKey bestKey;
-      std::size_t bi = 0, bj = 0;
-      bool pair = false;
-      Collision bestStatic;
-      Sweep bestSweep;
-      for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        const Body& b = bodies_[i];
-        if (b.goal == b.rect.position()) continue;
-        asking = i;
-        const MoveResult r =
-            world.check(b.item, b.goal, Filter(staticFilter), {BroadPhase::swept, nullptr, 1});
-        if (r.collisions.empty()) continue;
-        const double u = std::max(r.collisions.front().ti, 0.0);
-        const EventKey key{false, order_[i], world.order(r.collisions.front().other)};
-        if (ahead(u, key, bestU, bestKey)) {
-          bestU = u;
-          bestKey = key;
-          bi = i;
-          pair = false;
-          bestStatic = r.collisions.front();
+  bool finished = false;
+  double last = 0;
+  for (int e = 0;; ++e) {
+    Best best;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const Body& b = bodies[i];
+      if (b.goal == b.rect.position()) continue;
+      const auto statics = [&](ItemId, ItemId other) {
+        if (batchSlots.count(other.index) || crossedStatics.count({i, other.index})) {
+          return response::ignore;
         }
-      }
-      for (std::size_t i0 = 0; i0 < bodies_.size(); ++i0) {
-        const Rect hull0 = unite(bodies_[i0].rect, bodies_[i0].rect.at(bodies_[i0].goal));
-        for (std::size_t j0 = i0 + 1; j0 < bodies_.size(); ++j0) {
-          const Body& b0 = bodies_[j0];
-          if (!overlaps(hull0, unite(b0.rect, b0.rect.at(b0.goal))) || crossed(pairKey(i0, j0))) {
-            continue;
-          }
-          const bool swap = order_[j0] < order_[i0];
-          const std::size_t i = swap ? j0 : i0, j = swap ? i0 : j0;
-          const Body& a = bodies_[i];
-          const Body& b = bodies_[j];
-          if (filter(a.item, b.item) == response::ignore &&
-              filter(b.item, a.item) == response::ignore) {
-            continue;
-          }
-          const Vec2 da = a.goal - a.rect.position(), db = b.goal - b.rect.position();
-          const Sweep s = sweepRect(a.rect, a.rect.position() + (da - db), b.rect);
-          if (s.kind == SweepKind::miss) continue;
-          const double u = std::max(s.ti, 0.0);
-          const EventKey key{true, order_[i], order_[j]};
-          if (ahead(u, key, bestU, bestKey)) {
-            bestU = u;
-            bestKey = key;
-            bi = i;
-            bj = j;
-            pair = true;
-            bestSweep = s;
-          }
-        }
-      }
-      if (bestU > 1.0) {
-        finished = true;
-        break;
-      }
-
-      // Everyone not in the event advances to its instant.
-      for (std::size_t k = 0; k < bodies_.size(); ++k) {
-        if (k == bi || (pair && k == bj)) continue;
-        Body& b = bodies_[k];
-        const Vec2 p = b.rect.position() + (b.goal - b.rect.position()) * bestU;
-        b.rect = b.rect.at(p);
-        world.update(b.item, b.rect);
-      }
-
-      if (!pair) {
-        Body& b = bodies_[bi];
-        const Leg next = world.respond(bestStatic, b.goal);
-        bestStatic.target = next.goal;
-        events_.push_back(bestStatic);
-        owner_.push_back(bi);
-        if (next.passThrough) crossed_.push_back(staticKey(bi, bestStatic.other.index));
-        b.rect = b.rect.at(next.start);
-        b.goal = next.goal;
-        world.update(b.item, b.rect);
-        continue;
-      }
-
-      // Mover meets mover: j advances; i is placed against j's new edges exactly.
-      Body& a = bodies_[bi];
-      Body& b = bodies_[bj];
-      const Vec2 da = a.goal - a.rect.position(), db = b.goal - b.rect.position();
-      const Rect aStart = a.rect, bStart = b.rect;
-      const Rect bAt = b.rect.at(b.rect.position() + db * bestU);
-      Vec2 pa = a.rect.position() + da * bestU;
-      if (bestSweep.normal.x < 0) pa.x = placeBefore(bAt.x, a.rect.w);
-      if (bestSweep.normal.x > 0) pa.x = bAt.right();
-      if (bestSweep.normal.y < 0) pa.y = placeBefore(bAt.y, a.rect.h);
-      if (bestSweep.normal.y > 0) pa.y = bAt.bottom();
-      a.rect = a.rect.at(pa);
-      b.rect = bAt;
-      const auto record = [&](Body& self, std::size_t selfIndex, const Body& other, Vec2 normal,
-                              Vec2 move, const Rect& selfStart, const Rect& otherStart) {
-        Collision c;
-        c.item = self.item;
-        c.other = other.item;
-        c.overlaps = bestSweep.kind == SweepKind::overlap;
-        c.corner = bestSweep.corner;
-        c.ti = bestSweep.ti;
-        c.move = move;
-        c.normal = normal;
-        c.touch = self.rect.position();
-        c.itemRect = selfStart;
-        c.otherRect = otherStart;
-        c.response = filter(self.item, other.item);
-        if (c.response == response::ignore) return true;  // this side is not told
-        const Leg next = world.respond(c, self.goal);
-        c.target = next.goal;
-        events_.push_back(c);
-        owner_.push_back(selfIndex);
-        self.rect = self.rect.at(next.start);
-        self.goal = next.goal;
-        return next.passThrough;
+        return filter(b.item, other);
       };
-      const bool passA = record(a, bi, b, bestSweep.normal, da, aStart, bStart);
-      const bool passB = record(b, bj, a, bestSweep.normal * -1.0, db, bStart, aStart);
-      // A side that does not yield would push into the other at the same instant forever: once
-      // either side passes through, the pair is done for this tick.
-      if (passA || passB) crossed_.push_back(pairKey(bi, bj));
-      world.update(a.item, a.rect);
-      world.update(b.item, b.rect);
+      const MoveResult r =
+          world.project(b.rect, b.goal, Filter(statics), {BroadPhase::swept, nullptr, 1});
+      if (r.collisions.empty()) continue;
+      const Collision& c = r.collisions.front();
+      const double t = b.t0 + std::max(c.ti, 0.0) * (1.0 - b.t0);
+      if (best.beats(t, false, b.order, world.order(c.other))) {
+        best = {true, t, false, b.order, world.order(c.other), i, 0, c, {}, 0, {}, {}};
+        best.hit.item = b.item;
+      }
+    }
+    for (std::size_t i0 = 0; i0 < bodies.size(); ++i0) {
+      for (std::size_t j0 = i0 + 1; j0 < bodies.size(); ++j0) {
+        const std::size_t i = bodies[i0].order < bodies[j0].order ? i0 : j0;
+        const std::size_t j = i == i0 ? j0 : i0;
+        if (crossedPairs.count({i0, j0})) continue;
+        const Body& a = bodies[i];
+        const Body& b = bodies[j];
+        const double from = std::max(a.t0, b.t0);
+        const Vec2 pa = at(a, from), pb = at(b, from);
+        if (!overlaps(unite(a.rect.at(pa), a.rect.at(a.goal)),
+                      unite(b.rect.at(pb), b.rect.at(b.goal)))) {
+          continue;
+        }
+        if (filter(a.item, b.item) == response::ignore &&
+            filter(b.item, a.item) == response::ignore) {
+          continue;
+        }
+        const Sweep s = sweepRect(a.rect.at(pa), pa + ((a.goal - pa) - (b.goal - pb)), b.rect.at(pb));
+        if (s.kind == SweepKind::miss) continue;
+        const double t = from + std::max(s.ti, 0.0) * (1.0 - from);
+        if (best.beats(t, true, a.order, b.order)) {
+          best = {true, t, true, a.order, b.order, i, j, {}, s, from, pa, pb};
+        }
+      }
+    }
+    if (!best.found) {
+      finished = true;
+      break;
+    }
+    if (e == maxEvents) break;
+    last = best.t;
+    if (instants) instants->push_back(best.t);
+
+    if (!best.pair) {
+      Body& b = bodies[best.i];
+      Collision c = best.hit;
+      const Leg next = world.respond(c, b.goal);
+      c.target = next.goal;
+      events.push_back({best.i, c});
+      if (next.passThrough) crossedStatics.insert({best.i, c.other.index});
+      b.rect = b.rect.at(next.start);
+      b.goal = next.goal;
+      b.t0 = best.t;
+      continue;
     }
 
-    for (Body& b : bodies_) {
-      if (finished) b.rect = b.rect.at(b.goal);  // out of events: everyone stays where they are
-      world.update(b.item, b.rect);
-    }
-  } catch (...) {
-    for (std::size_t k = 0; k < bodies_.size(); ++k) world.update(bodies_[k].item, startRects_[k]);
-    throw;
-  }
-
-  // Group the events by body, keeping time order.
-  collisions_.clear();
-  for (std::size_t k = 0; k < bodies_.size(); ++k) {
-    bodies_[k].first = collisions_.size();
-    for (std::size_t e = 0; e < events_.size(); ++e)
-      if (owner_[e] == k) collisions_.push_back(events_[e]);
-    bodies_[k].count = collisions_.size() - bodies_[k].first;
+    // b comes to the instant on its path; a is placed against b's edges there.
+    Body& a = bodies[best.i];
+    Body& b = bodies[best.j];
+    const Sweep& s = best.sweep;
+    const Rect aStart = a.rect.at(best.pi), bStart = b.rect.at(best.pj);
+    const Vec2 da = a.goal - best.pi, db = b.goal - best.pj;
+    const Rect bAt = b.rect.at(at(b, best.t));
+    Vec2 pa = at(a, best.t);
+    if (s.normal.x < 0) pa.x = placeBefore(bAt.x, a.rect.w);
+    if (s.normal.x > 0) pa.x = bAt.right();
+    if (s.normal.y < 0) pa.y = placeBefore(bAt.y, a.rect.h);
+    if (s.normal.y > 0) pa.y = bAt.bottom();
+    a.rect = a.rect.at(pa);
+    b.rect = bAt;
+    a.t0 = b.t0 = best.t;
+    const auto tell = [&](std::size_t self, const Body& other, Vec2 normal, Vec2 move,
+                          const Rect& selfStart, const Rect& otherStart) {
+      Body& me = bodies[self];
+      Collision c;
+      c.item = me.item;
+      c.other = other.item;
+      c.overlaps = s.kind == SweepKind::overlap;
+      c.corner = s.corner;
+      c.ti = s.ti;
+      c.move = move;
+      c.normal = normal;
+      c.touch = me.rect.position();
+      c.itemRect = selfStart;
+      c.otherRect = otherStart;
+      c.response = filter(me.item, other.item);
+      if (c.response == response::ignore) return true;  // not told, and done with the other
+      const Leg next = world.respond(c, me.goal);
+      c.target = next.goal;
+      events.push_back({self, c});
+      me.rect = me.rect.at(next.start);
+      me.goal = next.goal;
+      return next.passThrough;
+    };
+    const bool passA = tell(best.i, b, s.normal, da, aStart, bStart);
+    const bool passB = tell(best.j, a, s.normal * -1.0, db, bStart, aStart);
+    if (passA || passB) crossedPairs.insert({std::min(best.i, best.j), std::max(best.i, best.j)});
   }
 
   std::vector<Outcome> out;
-  for (const Body& b : bodies_) {
-    out.push_back({b.rect.position(),
-                   std::vector<Collision>(
-                       collisions_.begin() + static_cast<std::ptrdiff_t>(b.first),
-                       collisions_.begin() + static_cast<std::ptrdiff_t>(b.first + b.count))});
+  for (Body& b : bodies) {
+    b.rect = b.rect.at(finished ? b.goal : at(b, last));
+    world.update(b.item, b.rect);
+    out.push_back({b.rect.position(), {}});
   }
+  for (const auto& [owner, c] : events) out[owner].collisions.push_back(c);
   return out;
 }
 

@@ -136,5 +136,65 @@ TEST(Batch, AStepThatThrowsPartWayPutsEveryBodyBack) {
   EXPECT_EQ(s.world.rect(bystander), (Rect{0, 100, 4, 4}));
 }
 
+// A body's path is re-based only by events it takes part in. While a and b meet at t = 1/4,
+// c flies on untouched and reaches the wall at t = 3/4: its collision describes the leg from
+// where it began the tick, not from where it was at the others' event.
+//
+//   [a]-> <-[b]                 (meet at t = 1/4)
+//
+//   [c] ------------------->|wall|   (c.right 8 -> 40 crosses the wall's face at 32: t = 3/4)
+TEST(Batch, ABodyIsReBasedOnlyByItsOwnEvents) {
+  World w(32);
+  const ItemId a = w.add({0, 0, 8, 8});
+  const ItemId b = w.add({24, 0, 8, 8});
+  const ItemId c = w.add({0, 40, 8, 8});
+  w.add({32, 32, 8, 32});
+  Batch batch;
+  const BatchMove moves[] = {{a, {32, 0}}, {b, {-8, 0}}, {c, {32, 40}}};
+  batch.step(w, moves, Filter::all(response::touch));
+  ASSERT_EQ(batch.outcome(0).collisions.size(), 1u);
+  ASSERT_EQ(batch.outcome(2).collisions.size(), 1u);
+  const Collision& hit = batch.outcome(2).collisions[0];
+  EXPECT_EQ(hit.itemRect, (Rect{0, 40, 8, 8}));
+  EXPECT_EQ(hit.move, (Vec2{32, 0}));
+  EXPECT_EQ(hit.ti, 0.75);
+  EXPECT_EQ(w.rect(c).right(), 32.0);
+  EXPECT_EQ(w.rect(a).right(), w.rect(b).x);
+}
+
+// maxEvents bounds the events a tick may run; a tick whose events all fit ends as if there
+// were no bound, and one that has more stops every body at the instant of the last it ran.
+//
+//   |wall|          [a] slides down the wall's face to y = 30 (one event);
+//   [d]-->|wall2|   and d, meanwhile, would hit a second wall at t = 1/2.
+TEST(Batch, MaxEventsStopsTheTickOnlyWhenAnotherEventIsDue) {
+  World w(32);
+  w.add({100, -50, 16, 100});
+  const ItemId a = w.add({0, 0, 8, 8});
+  Batch batch;
+  const BatchMove one[] = {{a, {200, 30}}};
+  World once = w;
+  batch.step(once, one, {}, 1);
+  EXPECT_EQ(once.rect(a).right(), 100.0);
+  EXPECT_EQ(once.rect(a).y, 30.0) << "its one event ran and it slid on to its goal";
+
+  w.add({300, 200, 16, 16});
+  const ItemId d = w.add({200, 200, 8, 8});
+  const BatchMove two[] = {{a, {200, 30}}, {d, {384, 200}}};  // d's face 208 -> 392 meets 300 at 1/2
+  World cut = w;
+  batch.step(cut, two, {}, 1);
+  // a hit the wall at t = 92/200 and ran that event; d's hit at t = 1/2 did not run, so both
+  // stop where they were at t = 0.46: a where it touched, d short of its wall.
+  ASSERT_EQ(batch.outcome(0).collisions.size(), 1u);
+  EXPECT_EQ(cut.rect(a).position(), batch.outcome(0).collisions[0].touch);
+  EXPECT_EQ(cut.rect(a).right(), 100.0);
+  EXPECT_GT(cut.rect(d).x, 200.0);
+  EXPECT_LT(cut.rect(d).right(), 300.0);
+  World all = w;
+  batch.step(all, two, {}, 2);
+  EXPECT_EQ(all.rect(a).y, 30.0);
+  EXPECT_EQ(all.rect(d).right(), 300.0);
+}
+
 }  // namespace
 }  // namespace tv
