@@ -747,6 +747,29 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
              "indices below 2^52)");
   }
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
+  // A small rect reads its few cells directly, without the visit stamps that keep an item in
+  // several cells from being reported twice: asking twice about the same pair is allowed (the
+  // filter is a pure function of the pair). Items are registered in the cells their half-open
+  // extent meets, and an item whose interior meets r shares one of the cells r's half-open
+  // extent meets.
+  const detail::SpatialHash& hash = *hash_;
+  const CellRange all = grid_.cellsHolding(r);
+  const CellRange& used = hash.liveBox();
+  const CellRange cells{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
+                        std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
+  if (cells.count() <= 4) {
+    for (std::int64_t cy = cells.y0; cy <= cells.y1; ++cy) {
+      for (std::int64_t cx = cells.x0; cx <= cells.x1; ++cx) {
+        for (const detail::HashEntry& e : hash.items({cx, cy})) {
+          if (e.slot() != self && overlaps(r, e.rect) &&
+              filter(skip, ItemId{e.slot(), e.generation}) != response::ignore) {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
   bool any = false;
   forEachCandidate(self, r, r.position(), r, BroadPhase::bounds, nullptr,
                    [&](std::uint32_t other, std::uint32_t generation, const Rect& rect) {
