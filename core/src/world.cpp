@@ -106,7 +106,7 @@ void World::refuseItem(ItemId id, std::string_view where) const {
   fail(where, "item " + describe(id) + " is not in the world (never added, or removed)");
 }
 
-void World::validateRect(const Rect& r, std::string_view where) const {
+void World::refuseRect(const Rect& r, std::string_view where) const {
   requireFinite(where, "x", r.x);
   requireFinite(where, "y", r.y);
   requirePositive(where, "w", r.w);

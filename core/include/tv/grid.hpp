@@ -44,6 +44,8 @@ class Grid {
   explicit constexpr Grid(double cellSize) : size_(cellSize), inverse_(1.0 / cellSize) {}
 
   [[nodiscard]] constexpr double cellSize() const { return size_; }
+  /// 1 / cellSize, rounded.
+  [[nodiscard]] constexpr double inverse() const { return inverse_; }
 
   /// The cell holding coordinate v. Monotone in v, so two closed intervals that meet always
   /// share a cell, whatever the rounding of v · (1 / size). Precondition: v finite with
