@@ -2,7 +2,8 @@
 // a move is from its own lower bound, and adaptive against discrete where nothing moves fast.
 //
 // Index: [SECTION] the crowd driver · [SECTION] crowd table · [SECTION] move length ·
-//        [SECTION] lower bound · [SECTION] slow scenes · [SECTION] the study
+//        [SECTION] lower bound · [SECTION] slow scenes · [SECTION] bump-crowd ·
+//        [SECTION] slow scenes, the table · [SECTION] the study
 #include <malloc.h>
 
 #include <algorithm>
@@ -238,6 +239,7 @@ Kernels kernels(std::uint64_t reps) {
 
 struct SlowScene {
   std::string label;
+  std::string name;  // for --slow-scenes
   std::string scene;
   std::int64_t count;
   double speed;  // 0: the scene's default
@@ -399,6 +401,74 @@ void runBumpCrowd(const Options& o, int repeats, std::ostream& os) {
   }
 }
 
+// [SECTION] slow scenes, the table ---------------------------------------------------------------
+
+// The scenes by the names --slow-scenes takes, in the table's order.
+std::vector<SlowScene> slowScenes(std::int64_t n) {
+  return {
+      {"crowd, 60 px/s (1 px a tick)", "crowd-1px", "crowd", n, 60},
+      {"crowd, 120 px/s (2 px a tick)", "crowd-2px", "crowd", n, 120},
+      {"rest-floor (bodies resting on a floor under gravity)", "rest-floor", "rest-floor", n, 0},
+      {"seam-walk (walking on a floor of tiles, 240 px/s)", "seam-walk", "seam-walk", n, 0},
+  };
+}
+
+// Each case can run alone (--slow-only --slow-scenes S --slow-movers M) so that an instruction
+// count (valgrind --tool=callgrind --toggle-collect='tv::sim::Simulation::tick(*') covers one
+// scene and one mover: 30 warm-up ticks, then --ticks timed ones.
+int runSlowScenes(const Options& o, int repeats, std::ostream& os) {
+  const std::vector<SlowScene> all =
+      slowScenes(o.has("slow-count") ? wholeNumbers(o, "slow-count", {}, 10000).front()
+                                     : o.pick<std::int64_t>(500, 5000, 10000));
+  std::vector<std::string> names;
+  for (const SlowScene& s : all) names.push_back(s.name);
+  std::vector<SlowScene> slow;
+  for (const std::string& n : o.names("slow-scenes", names)) {
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const SlowScene& s) { return s.name == n; });
+    if (it == all.end()) {
+      std::string list;
+      for (const std::string& k : names) list += (list.empty() ? "" : ", ") + k;
+      throw UsageError{"--slow-scenes " + n + ": unknown scene (known: " + list + ")"};
+    }
+    slow.push_back(*it);
+  }
+  const std::vector<std::string> movers =
+      o.names("slow-movers", {"discrete", "adaptive", "continuous"});
+  for (const std::string& m : movers) {
+    if (m != "discrete" && m != "adaptive" && m != "continuous") {
+      throw UsageError{"--slow-movers " + m + ": discrete, adaptive or continuous"};
+    }
+  }
+  const std::uint64_t slowTicks =
+      o.has("ticks") ? std::max<std::uint64_t>(1, parseCount("ticks", o.extra.at("ticks")))
+                     : o.pick<std::uint64_t>(10, 60, 300);
+  os << "### adaptive against discrete where nothing moves fast\n\n"
+     << "Whole tv::sim::Simulation ticks (rules and snapshot included, the same for every "
+        "mover). Target: adaptive within 10% of discrete.\n\n";
+  Table slowTable(
+      {"scene", "N:", "discrete ms:", "adaptive ms:", "continuous ms:", "adaptive / discrete:"});
+  Progress progress("scale slow scenes", slow.size());
+  for (const SlowScene& s : slow) {
+    const auto timed = [&](const char* mover) {
+      const bool wanted = std::find(movers.begin(), movers.end(), mover) != movers.end();
+      return wanted ? simMsPerTick(s, mover, o.seed, slowTicks, repeats) : -1.0;
+    };
+    const double dis = timed("discrete");
+    const double ada = timed("adaptive");
+    const double con = timed("continuous");
+    const auto ms = [](double v) { return v < 0 ? std::string("") : fixed(v, 3); };
+    const std::string ratio =
+        dis > 0 && ada >= 0 ? fixed(ada / dis, 2) + "×" + (ada / dis <= 1.10 ? "" : " (missed)")
+                            : "";
+    slowTable.add({s.label, std::to_string(s.count), ms(dis), ms(ada), ms(con), ratio});
+    progress.step("slow " + s.name);
+  }
+  slowTable.printMarkdown(os);
+  slowTable.writeCsv(o.out, "scale_slow_scenes.csv");
+  return 0;
+}
+
 }  // namespace
 
 // [SECTION] the study -----------------------------------------------------------------------------
@@ -424,6 +494,7 @@ int runScale(const Options& o) {
   }
   const bool crowdOnly = o.has("crowd-only");
   const bool bumpOnly = o.has("bump-only");
+  const bool slowOnly = o.has("slow-only");
   const int repeats = o.pick(1, 3, 5);
   const auto ticksFor = [&](std::int64_t n) -> std::uint64_t {
     if (o.has("ticks")) return std::max<std::uint64_t>(1, parseCount("ticks", o.extra.at("ticks")));
@@ -437,6 +508,7 @@ int runScale(const Options& o) {
   os << "Single thread. Tracing compiled " << (kTraceCompiledIn ? "in (and off)" : "out")
      << ". Times are the best of " << repeats << " repeat(s).\n\n";
 
+  if (slowOnly) return runSlowScenes(o, repeats, os);
   if (!crowdOnly) runBumpCrowd(o, repeats, os);
   if (bumpOnly) return 0;
 
@@ -450,7 +522,7 @@ int runScale(const Options& o) {
         "(tiles + movers).\n\n";
   Table crowd({"N:", "mover", "ms/tick:", "moves/s:", "ns/move:", "sim ms/tick:", "cells/move:",
                "candidates/move:", "bytes/item:"});
-  Progress progress("scale", counts.size() * movers.size() + (crowdOnly ? 0 : 14));
+  Progress progress("scale", counts.size() * movers.size() + (crowdOnly ? 0 : 9));
   std::vector<CrowdRow> rows;
   for (const std::int64_t n : counts) {
     for (const std::string& m : movers) {
@@ -538,31 +610,7 @@ int runScale(const Options& o) {
   bound.printMarkdown(os);
   bound.writeCsv(o.out, "scale_lower_bound.csv");
 
-  // -- slow scenes
-  os << "### adaptive against discrete where nothing moves fast\n\n"
-     << "Whole tv::sim::Simulation ticks (rules and snapshot included, the same for every "
-        "mover). Target: adaptive within 10% of discrete.\n\n";
-  const std::int64_t slowN = o.pick<std::int64_t>(500, 5000, 10000);
-  const std::vector<SlowScene> slow = {
-      {"crowd, 60 px/s (1 px a tick)", "crowd", slowN, 60},
-      {"crowd, 120 px/s (2 px a tick)", "crowd", slowN, 120},
-      {"rest-floor (bodies resting on a floor under gravity)", "rest-floor", slowN, 0},
-      {"seam-walk (walking on a floor of tiles, 240 px/s)", "seam-walk", slowN, 0},
-  };
-  Table slowTable(
-      {"scene", "N:", "discrete ms:", "adaptive ms:", "continuous ms:", "adaptive / discrete:"});
-  const std::uint64_t slowTicks = o.pick<std::uint64_t>(10, 60, 300);
-  for (const SlowScene& s : slow) {
-    const double dis = simMsPerTick(s, "discrete", o.seed, slowTicks, repeats);
-    const double ada = simMsPerTick(s, "adaptive", o.seed, slowTicks, repeats);
-    const double con = simMsPerTick(s, "continuous", o.seed, slowTicks, repeats);
-    slowTable.add({s.label, std::to_string(s.count), fixed(dis, 3), fixed(ada, 3), fixed(con, 3),
-                   fixed(ada / dis, 2) + "×" + (ada / dis <= 1.10 ? "" : " (missed)")});
-    progress.step("slow " + s.scene);
-  }
-  slowTable.printMarkdown(os);
-  slowTable.writeCsv(o.out, "scale_slow_scenes.csv");
-  return 0;
+  return runSlowScenes(o, repeats, os);
 }
 
 }  // namespace tv::bench
