@@ -41,12 +41,12 @@ enum class MoverKind : std::uint8_t {
   /// moves over 2^24 px on an axis. Never tunnels through bodies and obstacles at least 1 px
   /// thick; a thinner one can fit between two consecutive pixel positions and be stepped over.
   pixel,
-  /// A short move (below `safetyFraction` of the smallest extent of the mover and the world)
-  /// first asks whether its hull is free — one rect query, as cheap as discrete — and teleports
-  /// if so; anything else, and every long move, goes continuous. A body moving back into what
-  /// its last move ended against (resting on a floor) goes straight to continuous, skipping a
-  /// probe that would fail. Same results as continuous; pays for sweeps only where something is
-  /// near.
+  /// A short move — one whose bounding box spans at most 4 cells, or shorter than
+  /// `safetyFraction` of the smallest extent of the mover and the world — reads that box once:
+  /// what its filter does not ignore there is all that any of its legs can meet while they
+  /// slide, touch or cross, so a free move teleports and a body pressed onto a floor, resting
+  /// or walking across its seams, slides from that one read. Longer moves, and moves that meet
+  /// a bounce or a user's response, go continuous. Same results as continuous, bit for bit.
   adaptive,
 };
 
@@ -57,8 +57,8 @@ struct MoverSpec {
   double maxStep = 0.0;
   /// substep: how each piece moves, `discrete` or `sweep`.
   MoverKind inner = MoverKind::discrete;
-  /// adaptive: fraction of the smallest extent below which a move tries the cheap path.
-  /// Range (0, 1], default 0.25.
+  /// adaptive: fraction of the smallest extent below which a move reads its bounding box
+  /// whatever cells it spans (the cheap path). Range (0, 1], default 0.25.
   double safetyFraction = 0.25;
 
   /// Stable name: "discrete", "sweep", "substep-discrete", "substep-sweep", "continuous",
@@ -88,7 +88,7 @@ class Mover {
   /// Forgets per-item state (the pixel mover's remainders), e.g. when a scene restarts.
   void reset() {
     remainder_.clear();
-    contact_.clear();
+    pressed_.clear();
   }
 
  private:
@@ -97,6 +97,8 @@ class Mover {
   MoveResult substep(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
   MoveResult pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
   MoveResult adaptive(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
+  bool settleFromOneScan(World& world, ItemId id, const Rect& start, Vec2 goal, Filter filter,
+                         MoveTrace* trace, MoveResult& out);
 
   MoverSpec spec_;
   std::string name_;
@@ -108,11 +110,15 @@ class Mover {
     std::uint32_t generation = 0;
   };
   std::vector<Remainder> remainder_;  // pixel: sub-pixel remainder per item slot
-  struct Contact {
-    Vec2 normal;                   // of the last move's last collision
-    std::uint32_t generation = 0;  // the item's + 1; 0: its last move met nothing
+  struct Reached {  // adaptive: an item in a move's bounding box that its filter does not ignore
+    ItemId id;
+    Rect rect;
+    ResponseId response = response::slide;
+    bool crossed = false;  // passed through earlier in this move
   };
-  std::vector<Contact> contact_;  // adaptive, per item slot
+  std::vector<Reached> reached_;
+  std::vector<std::uint32_t> pressed_;  // adaptive, per item slot: its generation + 1 when its
+                                        // last move met something, else 0
 };
 
 }  // namespace tv
