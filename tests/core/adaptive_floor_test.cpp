@@ -237,6 +237,30 @@ TEST(AdaptiveOnFloors, DiscreteReportsAnOverlapWhereTheSweepReportsAContact) {
   }
 }
 
+TEST(AdaptiveOnFloors, AMoveTooShortToCarryTheEdgeOntoAFaceItTouchesIsNoHit) {
+  // A 1024 px wide body whose right edge rests on a wall's face, after a push into it:
+  //
+  //   [body: x 0.5 .. 1024.5]|wall|
+  //
+  // then moved right by 2^-50: its x changes (0.5 has ulps of 2^-53) but its right edge,
+  // 1024.5 + 2^-50, rounds back onto the face (ulps of 2^-42 there), so it never enters the
+  // wall: no collision, for the sweep as for adaptive.
+  for (const std::string_view name : {"continuous", "adaptive"}) {
+    World w(32);
+    const ItemId wall = w.add({1024.5, -8, 16, 32});
+    const ItemId body = w.add({0.5, 0, 1024, 8});
+    Mover m(parseMover(name));
+    const MoveResult pushed = m.move(w, body, {1.5, 0});
+    ASSERT_EQ(pushed.collisions.size(), 1u) << name;
+    EXPECT_EQ(pushed.collisions[0].other, wall) << name;
+    const Vec2 goal{0.5 + 0x1p-50, 0};
+    ASSERT_EQ(w.rect(body).at(goal).right(), 1024.5);
+    const MoveResult r = m.move(w, body, goal);
+    EXPECT_TRUE(r.collisions.empty()) << name;
+    EXPECT_EQ(r.position, goal) << name;
+  }
+}
+
 TEST(AdaptiveOnFloors, ATraceChangesNothing) {
   FloorScene a(5), b(5);
   Mover traced(parseMover("adaptive")), plain(parseMover("adaptive"));
