@@ -555,8 +555,9 @@ int runScale(const Options& o) {
      << "An 8×8 mover in a 256×256 tile map (16 px tiles, ~30% solid, 32 px cells) through a "
         "corridor cut exactly along its path, so the move runs its whole length with solid tiles "
         "beside it (candidates, never hit). `sweep` reads every cell of the move's bounding box; "
-        "`continuous` only the cells the rect crosses. `adaptive` is continuous for any move "
-        "longer than a quarter of the smallest extent (2 px here), so it is not listed.\n\n";
+        "`continuous` only the cells the rect crosses. `adaptive` makes such a move as "
+        "`continuous` does (it reads a move's bounding box only for a body pressing into what it "
+        "touches, and only when the box spans at most 4 cells), so it is not listed.\n\n";
   Table length({"px:", "direction",
                 "sweep ns:", "continuous ns:", "sweep candidates:", "continuous candidates:"});
   const std::uint64_t reps = o.pick<std::uint64_t>(2000, 20000, 100000);

@@ -24,7 +24,7 @@ constexpr std::array<std::string_view, 7> kDescriptions = {
     "pieces of at most maxStep (tile/2), each swept: the patch over bump.lua",
     "one exact sweep visiting only the cells the rect crosses: never tunnels, zero error",
     "one pixel at a time with a sub-pixel remainder (Celeste style): cost grows with speed",
-    "free short moves teleport after one hull query; everything else goes continuous",
+    "continuous, but a body pressed onto a floor or wall slides from one read of its move's box",
 };
 
 constexpr std::string_view kWhere = "tv::Mover";
@@ -376,21 +376,25 @@ MoveResult Mover::adaptive(World& world, ItemId id, Vec2 goal, Filter filter, Mo
   const Rect start = world.rect(id);
   requireFinite("tv::Mover::move", "goal.x", goal.x);
   requireFinite("tv::Mover::move", "goal.y", goal.y);
-  if (pressed_.size() <= id.index) pressed_.resize(id.index + 1, 0);
-  std::uint32_t& pressed = pressed_[id.index];
+  if (contact_.size() <= id.index) contact_.resize(id.index + 1);
+  Contact& contact = contact_[id.index];
+  const Vec2 d = goal - start.position();
+  const bool pressing = contact.generation == id.generation + 1 &&
+                        d.x * contact.normal.x + d.y * contact.normal.y < 0.0;
   MoveResult r;
-  // A body whose last move met nothing most likely meets nothing again: World::move decides
-  // that in one scan of its cells. One whose last move met something (resting on a floor,
-  // walking along it) is settled from one read of its bounding box when it can be.
-  if (pressed != id.generation + 1 ||
-      !settleFromOneScan(world, id, start, goal, filter, trace, r)) {
+  // A body moving back into what its last move ended against (resting on a floor under
+  // gravity, walking along it, pressed to a wall) meets it again: its move is settled from one
+  // read of its bounding box when it can be. Any other move most likely meets nothing, which
+  // World::move decides in one scan of its cells.
+  if (!pressing || !settleFromOneScan(world, id, start, goal, filter, trace, r)) {
     if (trace) {
       trace->clear();
       trace->mover = name_;
     }
     r = world.move(id, goal, filter, {BroadPhase::swept, trace});
   }
-  pressed = r.collisions.empty() ? 0 : id.generation + 1;
+  contact =
+      r.collisions.empty() ? Contact{} : Contact{r.collisions.back().normal, id.generation + 1};
   return r;
 }
 

@@ -41,12 +41,14 @@ enum class MoverKind : std::uint8_t {
   /// moves over 2^24 px on an axis. Never tunnels through bodies and obstacles at least 1 px
   /// thick; a thinner one can fit between two consecutive pixel positions and be stepped over.
   pixel,
-  /// A short move — one whose bounding box spans at most 4 cells, or shorter than
-  /// `safetyFraction` of the smallest extent of the mover and the world — reads that box once:
-  /// what its filter does not ignore there is all that any of its legs can meet while they
-  /// slide, touch or cross, so a free move teleports and a body pressed onto a floor, resting
-  /// or walking across its seams, slides from that one read. Longer moves, and moves that meet
-  /// a bounce or a user's response, go continuous. Same results as continuous, bit for bit.
+  /// Continuous, made cheap where bodies rest and walk: a body moving back into what its last
+  /// move ended against (resting on a floor under gravity, walking along it, pressed to a
+  /// wall) reads its move's bounding box once — when the box spans at most 4 cells, or the
+  /// move is shorter than `safetyFraction` of the smallest extent of the mover and the world —
+  /// and slides from that one read: what its filter does not ignore there is all that its legs
+  /// can meet while they slide, touch or cross. Every other move, and one that meets a bounce
+  /// or a user's response, goes to World::move (whose lean path decides a free move in one
+  /// scan). Same results as continuous, bit for bit.
   adaptive,
 };
 
@@ -57,8 +59,8 @@ struct MoverSpec {
   double maxStep = 0.0;
   /// substep: how each piece moves, `discrete` or `sweep`.
   MoverKind inner = MoverKind::discrete;
-  /// adaptive: fraction of the smallest extent below which a move reads its bounding box
-  /// whatever cells it spans (the cheap path). Range (0, 1], default 0.25.
+  /// adaptive: fraction of the smallest extent below which a pressing move reads its bounding
+  /// box however many cells it spans. Range (0, 1], default 0.25.
   double safetyFraction = 0.25;
 
   /// Stable name: "discrete", "sweep", "substep-discrete", "substep-sweep", "continuous",
@@ -88,7 +90,7 @@ class Mover {
   /// Forgets per-item state (the pixel mover's remainders), e.g. when a scene restarts.
   void reset() {
     remainder_.clear();
-    pressed_.clear();
+    contact_.clear();
   }
 
  private:
@@ -117,8 +119,11 @@ class Mover {
     bool crossed = false;  // passed through earlier in this move
   };
   std::vector<Reached> reached_;
-  std::vector<std::uint32_t> pressed_;  // adaptive, per item slot: its generation + 1 when its
-                                        // last move met something, else 0
+  struct Contact {
+    Vec2 normal;                   // of the last move's last collision
+    std::uint32_t generation = 0;  // the item's + 1; 0: its last move met nothing
+  };
+  std::vector<Contact> contact_;  // adaptive, per item slot
 };
 
 }  // namespace tv
