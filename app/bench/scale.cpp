@@ -245,8 +245,13 @@ struct SlowScene {
   double speed;  // 0: the scene's default
 };
 
-double simMsPerTick(const SlowScene& s, const std::string& mover, std::uint64_t seed,
-                    std::uint64_t ticks, int repeats) {
+struct SlowTiming {
+  double ms = -1.0;            // best of the repeats, per tick; < 0 when not run
+  double instructions = -1.0;  // per tick, over `ticks` more ticks; < 0 without the counter
+};
+
+SlowTiming simPerTick(const SlowScene& s, const std::string& mover, std::uint64_t seed,
+                      std::uint64_t ticks, int repeats) {
   const sim::SceneDef& scene = sim::findScene(s.scene);
   sim::Params p = scene.defaults();
   p.set(sim::param::count, static_cast<double>(s.count));
@@ -256,7 +261,15 @@ double simMsPerTick(const SlowScene& s, const std::string& mover, std::uint64_t 
   config.snapshotCapacity = 1;
   sim::Simulation sim(scene, p, parseMover(mover), config);
   for (int t = 0; t < 30; ++t) sim.tick();  // past the landing: bodies at rest
-  return msPerTick([&] { sim.tick(); }, ticks, repeats);
+  SlowTiming out;
+  out.ms = msPerTick([&] { sim.tick(); }, ticks, repeats);
+  const InstructionCounter counter;
+  if (counter.available()) {
+    const std::uint64_t before = counter.read();
+    for (std::uint64_t t = 0; t < ticks; ++t) sim.tick();
+    out.instructions = static_cast<double>(counter.read() - before) / static_cast<double>(ticks);
+  }
+  return out;
 }
 
 // [SECTION] bump-crowd ----------------------------------------------------------------------------
@@ -445,23 +458,27 @@ int runSlowScenes(const Options& o, int repeats, std::ostream& os) {
                      : o.pick<std::uint64_t>(10, 60, 300);
   os << "### adaptive against discrete where nothing moves fast\n\n"
      << "Whole tv::sim::Simulation ticks (rules and snapshot included, the same for every "
-        "mover). Target: adaptive within 10% of discrete.\n\n";
-  Table slowTable(
-      {"scene", "N:", "discrete ms:", "adaptive ms:", "continuous ms:", "adaptive / discrete:"});
+        "mover). Target: adaptive within 10% of discrete. **in instructions** is the same ratio "
+        "from the CPU's instruction counter (n/a where the kernel does not expose it; "
+        "`valgrind --tool=callgrind` gives it, one scene and mover at a time).\n\n";
+  Table slowTable({"scene", "N:", "discrete ms:", "adaptive ms:", "continuous ms:",
+                   "adaptive / discrete:", "in instructions:"});
   Progress progress("scale slow scenes", slow.size());
   for (const SlowScene& s : slow) {
     const auto timed = [&](const char* mover) {
       const bool wanted = std::find(movers.begin(), movers.end(), mover) != movers.end();
-      return wanted ? simMsPerTick(s, mover, o.seed, slowTicks, repeats) : -1.0;
+      return wanted ? simPerTick(s, mover, o.seed, slowTicks, repeats) : SlowTiming{};
     };
-    const double dis = timed("discrete");
-    const double ada = timed("adaptive");
-    const double con = timed("continuous");
-    const auto ms = [](double v) { return v < 0 ? std::string("") : fixed(v, 3); };
-    const std::string ratio =
-        dis > 0 && ada >= 0 ? fixed(ada / dis, 2) + "×" + (ada / dis <= 1.10 ? "" : " (missed)")
-                            : "";
-    slowTable.add({s.label, std::to_string(s.count), ms(dis), ms(ada), ms(con), ratio});
+    const SlowTiming dis = timed("discrete");
+    const SlowTiming ada = timed("adaptive");
+    const SlowTiming con = timed("continuous");
+    const auto ms = [](const SlowTiming& t) { return t.ms < 0 ? std::string() : fixed(t.ms, 3); };
+    const auto ratio = [](double a, double d) {
+      return a < 0 || d <= 0 ? std::string("n/a")
+                             : fixed(a / d, 2) + "×" + (a / d <= 1.10 ? "" : " (missed)");
+    };
+    slowTable.add({s.label, std::to_string(s.count), ms(dis), ms(ada), ms(con),
+                   ratio(ada.ms, dis.ms), ratio(ada.instructions, dis.instructions)});
     progress.step("slow " + s.name);
   }
   slowTable.printMarkdown(os);

@@ -370,6 +370,36 @@ bool pressedInto(const Rect& r, const Rect& g, const Rect& o) {
                       (o.right() == r.x && g.x < o.right())));
 }
 
+// What sweepRect(a, goal, b) gives for an item `b` that pressedInto(a, a.at(goal), b) found: a
+// hit at ti = 0 on the face pressed into, placed as sweepRect places it (the far edge already
+// on the face keeps its coordinate; the other axis is interpolated at ti and clamped), without
+// its general entry-time arithmetic. Kept step for step with sweep.cpp; the adaptive tests
+// compare every move with the continuous sweep.
+Sweep pressedSweep(const Rect& a, Vec2 goal, const Rect& b) {
+  const Rect g = a.at(goal);
+  Sweep s;
+  s.kind = SweepKind::hit;
+  s.corner = false;
+  const auto along = [&](double from, double to) {
+    const double v = from + s.ti * (to - from);
+    return std::clamp(v, std::min(from, to), std::max(from, to));
+  };
+  // ti is the gap to the face over the distance the near edge travels, as sweepRect's entry
+  // time: zero, but with the sign of the gap (-0.0 - +0.0 is -0.0).
+  if (a.x < b.right() && b.x < a.right()) {  // pressed into a face across y: a floor, a ceiling
+    const bool down = goal.y > a.y;
+    s.ti = down ? (b.y - a.bottom()) / (g.bottom() - a.bottom()) : (a.y - b.bottom()) / (a.y - g.y);
+    s.touch = {along(a.x, goal.x), down ? a.y : b.bottom()};
+    s.normal = {0.0, down ? -1.0 : 1.0};
+  } else {  // a wall
+    const bool right = goal.x > a.x;
+    s.ti = right ? (b.x - a.right()) / (g.right() - a.right()) : (a.x - b.right()) / (a.x - g.x);
+    s.touch = {right ? a.x : b.right(), along(a.y, goal.y)};
+    s.normal = {right ? -1.0 : 1.0, 0.0};
+  }
+  return s;
+}
+
 }  // namespace
 
 MoveResult Mover::adaptive(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
@@ -473,7 +503,7 @@ bool Mover::settleFromOneScan(World& world, ItemId id, const Rect& start, Vec2 g
     };
     // The first leg of a body pressed onto what it touches: every item it presses into is hit
     // at exactly ti = 0, not at a corner, so they tie and the first added wins; nothing else
-    // comes earlier unless the body starts inside something. One sweep, for the winner.
+    // comes earlier unless the body starts inside something.
     if (i == 0) {
       bool overlapping = false;
       for (const Reached& o : reached_) {
@@ -486,7 +516,7 @@ bool Mover::settleFromOneScan(World& world, ItemId id, const Rect& start, Vec2 g
       if (overlapping) {
         lead = nullptr;
       } else if (lead) {
-        leadSweep = sweepRect(r, to, lead->rect);
+        leadSweep = pressedSweep(r, to, lead->rect);
       }
     }
     if (!lead) {

@@ -261,6 +261,86 @@ TEST(AdaptiveOnFloors, AMoveTooShortToCarryTheEdgeOntoAFaceItTouchesIsNoHit) {
   }
 }
 
+TEST(AdaptiveOnFloors, PressingIntoEveryFaceEqualsContinuous) {
+  // A 10x10 body in a 48x48 room of 16 px tiles, first pushed onto one face, then pressed into
+  // it while sliding along it, back and forth across the seams between two tiles:
+  //
+  //   ########
+  //   #      #   the room's inside: x 0..48, y 0..48 (walls, floor and ceiling are tiles)
+  //   #  []  #
+  //   ########
+  //
+  // The start positions include -0.0 and +0.0 (the room's corner is at 0), where a rounding
+  // that ignored the sign would show.
+  const Vec2 into[] = {{0, 1}, {0, -1}, {1, 0}, {-1, 0}};
+  for (const Vec2 dir : into) {
+    for (const double at : {-0.0, 0.0, 7.25, 19.5}) {
+      const auto play = [&](std::string_view name) {
+        World w(32);
+        for (int k = -1; k <= 3; ++k) {
+          w.add({k * 16.0, -16, 16, 16});
+          w.add({k * 16.0, 48, 16, 16});
+          w.add({-16, k * 16.0, 16, 16});
+          w.add({48, k * 16.0, 16, 16});
+        }
+        const bool alongX = dir.x == 0.0;
+        const ItemId b = w.add(alongX ? Rect{at, 19, 10, 10} : Rect{19, at, 10, 10});
+        Mover m(parseMover(name));
+        ResultHash h;
+        for (int t = 0; t < 40; ++t) {
+          // No slide (by -0.0, which keeps a -0.0 coordinate) while it is pushed on.
+          const double slide = t < 3 ? -0.0 : (t / 10) % 2 == 0 ? 2.75 : -3.5;
+          const Vec2 d = alongX ? Vec2{slide, dir.y * (t < 3 ? 20.0 : 0.5)}
+                                : Vec2{dir.x * (t < 3 ? 20.0 : 0.5), slide};
+          h.add(m.move(w, b, w.rect(b).position() + d));
+        }
+        h.feed(w.stateHash());
+        return h.value();
+      };
+      EXPECT_EQ(play("adaptive"), play("continuous")) << dir.x << "," << dir.y << " at " << at;
+    }
+  }
+}
+
+TEST(AdaptiveOnFloors, PressedIntoACornerAtMinusZeroPlacesLikeTheSweep) {
+  // A body at x = -0.0 against a wall whose right edge is +0.0 (equal, not the same bits),
+  // resting on a floor tile added after the wall:
+  //
+  //   ##|[]      wall: x -16..+0.0; body: x -0.0..10
+  //   ##|####    floor: y 48..64
+  //
+  // Pressed down and left at once, it touches both at ti = 0; the wall, added first, is the
+  // collision, and its contact takes the wall's edge (+0.0), not the body's x (-0.0). The same
+  // for a ceiling (its bottom +0.0, the body's y -0.0) against a wall.
+  for (const bool ceiling : {false, true}) {
+    const auto play = [&](std::string_view name) {
+      World w(32);
+      if (ceiling) {
+        w.add({0, -16, 16, 16});  // the ceiling first: it wins the tie
+        w.add({-16, 0, 16, 16});
+      } else {
+        w.add({-16, 32, 16, 16});  // the wall first
+        w.add({0, 48, 16, 16});
+      }
+      const ItemId b = w.add(ceiling ? Rect{0, -0.0, 10, 10} : Rect{-0.0, 38, 10, 10});
+      Mover m(parseMover(name));
+      ResultHash h;
+      // A first push onto one face (by -0.0 along the other, which keeps its -0.0), then two
+      // presses into the corner.
+      const Vec2 first = ceiling ? Vec2{-0.5, -0.0} : Vec2{-0.0, 0.5};
+      const Vec2 corner = ceiling ? Vec2{-0.5, -0.5} : Vec2{-0.5, 0.5};
+      for (const Vec2 d : {first, corner, corner}) {
+        const MoveResult r = m.move(w, b, w.rect(b).position() + d);
+        EXPECT_FALSE(r.collisions.empty()) << name;
+        h.add(r);
+      }
+      h.feed(w.stateHash());
+      return h.value();
+    };
+    EXPECT_EQ(play("adaptive"), play("continuous")) << (ceiling ? "ceiling" : "floor");
+  }
+}
+
 TEST(AdaptiveOnFloors, ATraceChangesNothing) {
   FloorScene a(5), b(5);
   Mover traced(parseMover("adaptive")), plain(parseMover("adaptive"));
