@@ -2,7 +2,8 @@
 // a move is from its own lower bound, and adaptive against discrete where nothing moves fast.
 //
 // Index: [SECTION] the crowd driver · [SECTION] crowd table · [SECTION] move length ·
-//        [SECTION] lower bound · [SECTION] slow scenes · [SECTION] the study
+//        [SECTION] lower bound · [SECTION] slow scenes · [SECTION] bump-crowd ·
+//        [SECTION] slow scenes, the table · [SECTION] the study
 #include <malloc.h>
 
 #include <algorithm>
@@ -238,13 +239,19 @@ Kernels kernels(std::uint64_t reps) {
 
 struct SlowScene {
   std::string label;
+  std::string name;  // for --slow-scenes
   std::string scene;
   std::int64_t count;
   double speed;  // 0: the scene's default
 };
 
-double simMsPerTick(const SlowScene& s, const std::string& mover, std::uint64_t seed,
-                    std::uint64_t ticks, int repeats) {
+struct SlowTiming {
+  double ms = -1.0;            // best of the repeats, per tick; < 0 when not run
+  double instructions = -1.0;  // per tick, over `ticks` more ticks; < 0 without the counter
+};
+
+SlowTiming simPerTick(const SlowScene& s, const std::string& mover, std::uint64_t seed,
+                      std::uint64_t ticks, int repeats) {
   const sim::SceneDef& scene = sim::findScene(s.scene);
   sim::Params p = scene.defaults();
   p.set(sim::param::count, static_cast<double>(s.count));
@@ -254,7 +261,15 @@ double simMsPerTick(const SlowScene& s, const std::string& mover, std::uint64_t 
   config.snapshotCapacity = 1;
   sim::Simulation sim(scene, p, parseMover(mover), config);
   for (int t = 0; t < 30; ++t) sim.tick();  // past the landing: bodies at rest
-  return msPerTick([&] { sim.tick(); }, ticks, repeats);
+  SlowTiming out;
+  out.ms = msPerTick([&] { sim.tick(); }, ticks, repeats);
+  const InstructionCounter counter;
+  if (counter.available()) {
+    const std::uint64_t before = counter.read();
+    for (std::uint64_t t = 0; t < ticks; ++t) sim.tick();
+    out.instructions = static_cast<double>(counter.read() - before) / static_cast<double>(ticks);
+  }
+  return out;
 }
 
 // [SECTION] bump-crowd ----------------------------------------------------------------------------
@@ -407,6 +422,78 @@ void runBumpCrowd(const Options& o, int repeats, std::ostream& os) {
   }
 }
 
+// [SECTION] slow scenes, the table ---------------------------------------------------------------
+
+// The scenes by the names --slow-scenes takes, in the table's order.
+std::vector<SlowScene> slowScenes(std::int64_t n) {
+  return {
+      {"crowd, 60 px/s (1 px a tick)", "crowd-1px", "crowd", n, 60},
+      {"crowd, 120 px/s (2 px a tick)", "crowd-2px", "crowd", n, 120},
+      {"rest-floor (bodies resting on a floor under gravity)", "rest-floor", "rest-floor", n, 0},
+      {"seam-walk (walking on a floor of tiles, 240 px/s)", "seam-walk", "seam-walk", n, 0},
+  };
+}
+
+// Each case can run alone (--slow-only --slow-scenes S --slow-movers M) so that an instruction
+// count (valgrind --tool=callgrind --toggle-collect='tv::sim::Simulation::tick(*') covers one
+// scene and one mover: 30 warm-up ticks, then --ticks timed ones.
+int runSlowScenes(const Options& o, int repeats, std::ostream& os) {
+  const std::vector<SlowScene> all =
+      slowScenes(o.has("slow-count") ? wholeNumbers(o, "slow-count", {}, 10000).front()
+                                     : o.pick<std::int64_t>(500, 5000, 10000));
+  std::vector<std::string> names;
+  for (const SlowScene& s : all) names.push_back(s.name);
+  std::vector<SlowScene> slow;
+  for (const std::string& n : o.names("slow-scenes", names)) {
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const SlowScene& s) { return s.name == n; });
+    if (it == all.end()) {
+      std::string list;
+      for (const std::string& k : names) list += (list.empty() ? "" : ", ") + k;
+      throw UsageError{"--slow-scenes " + n + ": unknown scene (known: " + list + ")"};
+    }
+    slow.push_back(*it);
+  }
+  const std::vector<std::string> movers =
+      o.names("slow-movers", {"discrete", "adaptive", "continuous"});
+  for (const std::string& m : movers) {
+    if (m != "discrete" && m != "adaptive" && m != "continuous") {
+      throw UsageError{"--slow-movers " + m + ": discrete, adaptive or continuous"};
+    }
+  }
+  const std::uint64_t slowTicks =
+      o.has("ticks") ? std::max<std::uint64_t>(1, parseCount("ticks", o.extra.at("ticks")))
+                     : o.pick<std::uint64_t>(10, 60, 300);
+  os << "### adaptive against discrete where nothing moves fast\n\n"
+     << "Whole tv::sim::Simulation ticks (rules and snapshot included, the same for every "
+        "mover). Target: adaptive within 10% of discrete. **in instructions** is the same ratio "
+        "from the CPU's instruction counter (n/a where the kernel does not expose it; "
+        "`valgrind --tool=callgrind` gives it, one scene and mover at a time).\n\n";
+  Table slowTable({"scene", "N:", "discrete ms:", "adaptive ms:", "continuous ms:",
+                   "adaptive / discrete:", "in instructions:"});
+  Progress progress("scale slow scenes", slow.size());
+  for (const SlowScene& s : slow) {
+    const auto timed = [&](const char* mover) {
+      const bool wanted = std::find(movers.begin(), movers.end(), mover) != movers.end();
+      return wanted ? simPerTick(s, mover, o.seed, slowTicks, repeats) : SlowTiming{};
+    };
+    const SlowTiming dis = timed("discrete");
+    const SlowTiming ada = timed("adaptive");
+    const SlowTiming con = timed("continuous");
+    const auto ms = [](const SlowTiming& t) { return t.ms < 0 ? std::string() : fixed(t.ms, 3); };
+    const auto ratio = [](double a, double d) {
+      return a < 0 || d <= 0 ? std::string("n/a")
+                             : fixed(a / d, 2) + "×" + (a / d <= 1.10 ? "" : " (missed)");
+    };
+    slowTable.add({s.label, std::to_string(s.count), ms(dis), ms(ada), ms(con),
+                   ratio(ada.ms, dis.ms), ratio(ada.instructions, dis.instructions)});
+    progress.step("slow " + s.name);
+  }
+  slowTable.printMarkdown(os);
+  slowTable.writeCsv(o.out, "scale_slow_scenes.csv");
+  return 0;
+}
+
 }  // namespace
 
 // [SECTION] the study -----------------------------------------------------------------------------
@@ -432,6 +519,7 @@ int runScale(const Options& o) {
   }
   const bool crowdOnly = o.has("crowd-only");
   const bool bumpOnly = o.has("bump-only");
+  const bool slowOnly = o.has("slow-only");
   const int repeats = o.pick(1, 3, 5);
   const auto ticksFor = [&](std::int64_t n) -> std::uint64_t {
     if (o.has("ticks")) return std::max<std::uint64_t>(1, parseCount("ticks", o.extra.at("ticks")));
@@ -445,6 +533,7 @@ int runScale(const Options& o) {
   os << "Single thread. Tracing compiled " << (kTraceCompiledIn ? "in (and off)" : "out")
      << ". Times are the best of " << repeats << " repeat(s).\n\n";
 
+  if (slowOnly) return runSlowScenes(o, repeats, os);
   if (!crowdOnly) runBumpCrowd(o, repeats, os);
   if (bumpOnly) return 0;
 
@@ -458,7 +547,7 @@ int runScale(const Options& o) {
         "(tiles + movers).\n\n";
   Table crowd({"N:", "mover", "ms/tick:", "moves/s:", "ns/move:", "sim ms/tick:", "cells/move:",
                "candidates/move:", "bytes/item:"});
-  Progress progress("scale", counts.size() * movers.size() + (crowdOnly ? 0 : 14));
+  Progress progress("scale", counts.size() * movers.size() + (crowdOnly ? 0 : 9));
   std::vector<CrowdRow> rows;
   for (const std::int64_t n : counts) {
     for (const std::string& m : movers) {
@@ -491,8 +580,9 @@ int runScale(const Options& o) {
      << "An 8×8 mover in a 256×256 tile map (16 px tiles, ~30% solid, 32 px cells) through a "
         "corridor cut exactly along its path, so the move runs its whole length with solid tiles "
         "beside it (candidates, never hit). `sweep` reads every cell of the move's bounding box; "
-        "`continuous` only the cells the rect crosses. `adaptive` is continuous for any move "
-        "longer than a quarter of the smallest extent (2 px here), so it is not listed.\n\n";
+        "`continuous` only the cells the rect crosses. `adaptive` makes such a move as "
+        "`continuous` does (it reads a move's bounding box only for a body pressing into what it "
+        "touches, and only when the box spans at most 4 cells), so it is not listed.\n\n";
   Table length({"px:", "direction",
                 "sweep ns:", "continuous ns:", "sweep candidates:", "continuous candidates:"});
   const std::uint64_t reps = o.pick<std::uint64_t>(2000, 20000, 100000);
@@ -546,31 +636,7 @@ int runScale(const Options& o) {
   bound.printMarkdown(os);
   bound.writeCsv(o.out, "scale_lower_bound.csv");
 
-  // -- slow scenes
-  os << "### adaptive against discrete where nothing moves fast\n\n"
-     << "Whole tv::sim::Simulation ticks (rules and snapshot included, the same for every "
-        "mover). Target: adaptive within 10% of discrete.\n\n";
-  const std::int64_t slowN = o.pick<std::int64_t>(500, 5000, 10000);
-  const std::vector<SlowScene> slow = {
-      {"crowd, 60 px/s (1 px a tick)", "crowd", slowN, 60},
-      {"crowd, 120 px/s (2 px a tick)", "crowd", slowN, 120},
-      {"rest-floor (bodies resting on a floor under gravity)", "rest-floor", slowN, 0},
-      {"seam-walk (walking on a floor of tiles, 240 px/s)", "seam-walk", slowN, 0},
-  };
-  Table slowTable(
-      {"scene", "N:", "discrete ms:", "adaptive ms:", "continuous ms:", "adaptive / discrete:"});
-  const std::uint64_t slowTicks = o.pick<std::uint64_t>(10, 60, 300);
-  for (const SlowScene& s : slow) {
-    const double dis = simMsPerTick(s, "discrete", o.seed, slowTicks, repeats);
-    const double ada = simMsPerTick(s, "adaptive", o.seed, slowTicks, repeats);
-    const double con = simMsPerTick(s, "continuous", o.seed, slowTicks, repeats);
-    slowTable.add({s.label, std::to_string(s.count), fixed(dis, 3), fixed(ada, 3), fixed(con, 3),
-                   fixed(ada / dis, 2) + "×" + (ada / dis <= 1.10 ? "" : " (missed)")});
-    progress.step("slow " + s.scene);
-  }
-  slowTable.printMarkdown(os);
-  slowTable.writeCsv(o.out, "scale_slow_scenes.csv");
-  return 0;
+  return runSlowScenes(o, repeats, os);
 }
 
 }  // namespace tv::bench

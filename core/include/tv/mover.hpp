@@ -41,12 +41,14 @@ enum class MoverKind : std::uint8_t {
   /// moves over 2^24 px on an axis. Never tunnels through bodies and obstacles at least 1 px
   /// thick; a thinner one can fit between two consecutive pixel positions and be stepped over.
   pixel,
-  /// A short move (below `safetyFraction` of the smallest extent of the mover and the world)
-  /// first asks whether its hull is free — one rect query, as cheap as discrete — and teleports
-  /// if so; anything else, and every long move, goes continuous. A body moving back into what
-  /// its last move ended against (resting on a floor) goes straight to continuous, skipping a
-  /// probe that would fail. Same results as continuous; pays for sweeps only where something is
-  /// near.
+  /// Continuous, made cheap where bodies rest and walk: a body moving back into what its last
+  /// move ended against (resting on a floor under gravity, walking along it, pressed to a
+  /// wall) reads its move's bounding box once — when the box spans at most 4 cells, or the
+  /// move is shorter than `safetyFraction` of the smallest extent of the mover and the world —
+  /// and slides from that one read: what its filter does not ignore there is all that its legs
+  /// can meet while they slide, touch or cross. Every other move, and one that meets a bounce
+  /// or a user's response, goes to World::move (whose lean path decides a free move in one
+  /// scan). Same results as continuous, bit for bit.
   adaptive,
 };
 
@@ -57,8 +59,8 @@ struct MoverSpec {
   double maxStep = 0.0;
   /// substep: how each piece moves, `discrete` or `sweep`.
   MoverKind inner = MoverKind::discrete;
-  /// adaptive: fraction of the smallest extent below which a move tries the cheap path.
-  /// Range (0, 1], default 0.25.
+  /// adaptive: fraction of the smallest extent below which a pressing move reads its bounding
+  /// box however many cells it spans. Range (0, 1], default 0.25.
   double safetyFraction = 0.25;
 
   /// Stable name: "discrete", "sweep", "substep-discrete", "substep-sweep", "continuous",
@@ -97,6 +99,8 @@ class Mover {
   MoveResult substep(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
   MoveResult pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
   MoveResult adaptive(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
+  bool settleFromOneScan(World& world, ItemId id, const Rect& start, Vec2 goal, Filter filter,
+                         MoveTrace* trace, MoveResult& out);
 
   MoverSpec spec_;
   std::string name_;
@@ -108,6 +112,13 @@ class Mover {
     std::uint32_t generation = 0;
   };
   std::vector<Remainder> remainder_;  // pixel: sub-pixel remainder per item slot
+  struct Reached {  // adaptive: an item in a move's bounding box that its filter does not ignore
+    ItemId id;
+    Rect rect;
+    ResponseId response = response::slide;
+    bool crossed = false;  // passed through earlier in this move
+  };
+  std::vector<Reached> reached_;
   struct Contact {
     Vec2 normal;                   // of the last move's last collision
     std::uint32_t generation = 0;  // the item's + 1; 0: its last move met nothing
