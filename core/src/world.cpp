@@ -747,24 +747,26 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
              "indices below 2^52)");
   }
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
-  // A small rect reads its few cells directly, without the visit stamps that keep an item in
-  // several cells from being reported twice: asking twice about the same pair is allowed (the
-  // filter is a pure function of the pair). Items are registered in the cells their half-open
-  // extent meets, and an item whose interior meets r shares one of the cells r's half-open
-  // extent meets.
+  // A small rect reads its few cells directly: items are registered in the cells their
+  // half-open extent meets, and an item whose interior meets r shares one of the cells r's
+  // half-open extent meets. Only an item in several cells needs a visit stamp, so that the
+  // filter is asked once about each item (a filter may gather what it is asked about).
   const detail::SpatialHash& hash = *hash_;
   const CellRange all = grid_.cellsHolding(r);
   const CellRange& used = hash.liveBox();
   const CellRange cells{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
                         std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
   if (cells.count() <= 4) {
+    const std::uint32_t epoch = cells.count() > 1 ? nextEpoch() : 0;
     for (std::int64_t cy = cells.y0; cy <= cells.y1; ++cy) {
       for (std::int64_t cx = cells.x0; cx <= cells.x1; ++cx) {
         for (const detail::HashEntry& e : hash.items({cx, cy})) {
-          if (e.slot() != self && overlaps(r, e.rect) &&
-              filter(skip, ItemId{e.slot(), e.generation}) != response::ignore) {
-            return true;
+          if (e.slot() == self || !overlaps(r, e.rect)) continue;
+          if (epoch != 0 && e.shared()) {
+            if (stamp_[e.slot()] == epoch) continue;
+            stamp_[e.slot()] = epoch;
           }
+          if (filter(skip, ItemId{e.slot(), e.generation}) != response::ignore) return true;
         }
       }
     }
