@@ -413,7 +413,8 @@ bool before(const Rect& r, Vec2 goal, const Sweep& a, const Rect& ra, const Swee
 
 template <class Visit>
 bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
-                          Filter filter, MoveTrace* trace, Collision& best, Visit&& visit) const {
+                          Filter filter, MoveTrace* trace, bool askEveryHit, Collision& best,
+                          Visit&& visit) const {
   const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
   // The leader so far, kept small: the Collision is filled once, for the winner.
   bool found = false;
@@ -438,18 +439,24 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
     }
     const Sweep s = sweepRect(r, goal, otherRect);
     if (s.kind == SweepKind::miss) return;
+    const auto ask = [&] {
+      const ResponseId resp = filter(selfId, otherId);
+      if (trace) trace->answers.push_back({otherId, resp});
+      if (resp != response::ignore && resp >= responses_.size()) {
+        fail(kMove,
+             "filter returned response " + std::to_string(resp) + ", which is not registered");
+      }
+      return resp;
+    };
+    ResponseId resp = response::ignore;
+    if (askEveryHit && (resp = ask()) == response::ignore) return;
     // Add order breaks exact ties only, so the slots (a cache miss each) are read
     // only then.
     if (found && !before(r, goal, s, otherRect, lead, leadRect,
                          [&] { return orders_[other] < orders_[leadId.index]; })) {
       return;
     }
-    const ResponseId resp = filter(selfId, otherId);
-    if (trace) trace->answers.push_back({otherId, resp});
-    if (resp == response::ignore) return;
-    if (resp >= responses_.size()) {
-      fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
-    }
+    if (!askEveryHit && (resp = ask()) == response::ignore) return;
     lead = s;
     leadId = otherId;
     leadRect = otherRect;
@@ -474,14 +481,18 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
 bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
                      MoveTrace* trace, Collision& best) const {
   const Rect hull = unite(r, r.at(goal));
-  return firstHitAmong(self, r, goal, hull, filter, trace, best, [&](const auto& f) {
+  return firstHitAmong(self, r, goal, hull, filter, trace, false, best, [&](const auto& f) {
     forEachCandidate(self, r, goal, hull, broad, trace, f);
   });
 }
 
 bool World::firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
                        Vec2 goal, Filter filter, Collision& best) const {
-  return firstHitAmong(self, r, goal, unite(r, r.at(goal)), filter, nullptr, best,
+  // The full path asks about a hit only when it would lead as the cells give it, and a list in
+  // another order leads with others: asked about every hit, an untraced move asks about every
+  // pair its traced twin asks about, so a recording made untraced steps traced (answers looked up
+  // by pair) without being asked about a pair it never recorded.
+  return firstHitAmong(self, r, goal, unite(r, r.at(goal)), filter, nullptr, true, best,
                        [&](const auto& f) {
                          for (const Candidate& c : candidates) f(c.slot, c.generation, c.rect);
                        });

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <span>
 #include <string>
 #include <utility>
@@ -165,7 +166,8 @@ class Scene {
 
 // Two identical scenes, one moved untraced (the lean and narrow paths wherever they apply), one
 // traced (the full path every move): every move's position and collisions are the same bit for
-// bit, and so are the state hashes, while movers resize across the four-cell boundary, teleport
+// bit, and so are the state hashes; the traced move asks the filter about no pair the untraced
+// one did not ask about (while the two share their history); while movers resize across the four-cell boundary, teleport
 // into overlaps, are removed and re-added, and the untraced world is swapped for a copy and for a
 // restored state on the way.
 TEST(NarrowMove, EveryMoveEqualsTheTracedFullPathBitForBit) {
@@ -173,7 +175,19 @@ TEST(NarrowMove, EveryMoveEqualsTheTracedFullPathBitForBit) {
   std::size_t collisions = 0, moves = 0, overlapsAtStart = 0, largeMovers = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     Scene lean(seed), full(seed);
-    const auto filter = [&](ItemId item, ItemId other) { return lean.responseOf(item, other); };
+    // What the untraced move asked; the traced one must ask nothing else (a recording made
+    // untraced holds those answers by pair, and the debugger steps it traced).
+    std::set<std::pair<std::uint32_t, std::uint32_t>> asked;
+    std::string unasked;
+    const auto filter = [&](ItemId item, ItemId other) {
+      asked.insert({item.index, other.index});
+      return lean.responseOf(item, other);
+    };
+    const auto tracedFilter = [&](ItemId item, ItemId other) {
+      if (asked.count({item.index, other.index}) == 0 && unasked.empty())
+        unasked = std::to_string(item.index) + " about " + std::to_string(other.index);
+      return lean.responseOf(item, other);
+    };
     for (int tick = 0; tick < 40; ++tick) {
       if (tick == 13) {  // a copy carries on as the original would
         World copy = lean.world;
@@ -225,9 +239,17 @@ TEST(NarrowMove, EveryMoveEqualsTheTracedFullPathBitForBit) {
         const Vec2 goal = from.position() + lean.velocity[i];
         overlapsAtStart += lean.world.anyOverlap(from, id) ? 1u : 0u;
         largeMovers += lean.world.grid().cellsHolding(from).count() > 4 ? 1u : 0u;
+        asked.clear();
         const MoveResult a = lean.world.move(id, goal, filter, options);
         const std::vector<Collision> ca(a.collisions.begin(), a.collisions.end());
-        const MoveResult b = full.world.move(full.movers[i], goal, filter, traced);
+        const MoveResult b = full.world.move(full.movers[i], goal, tracedFilter, traced);
+        // Until the restore: which pairs a move asks about follows the order of the cells'
+        // entries, which a restored world rebuilds in slot order (a copy keeps it).
+        if (tick < 27) {
+          ASSERT_EQ(unasked, "") << "the traced move asked " << unasked << ", seed " << seed
+                                 << " tick " << tick << " mover " << i;
+        }
+        unasked.clear();
         ASSERT_TRUE(same(a.position, b.position))
             << "seed " << seed << " tick " << tick << " mover " << i;
         ASSERT_EQ(differences(ca, b.collisions), "")
@@ -252,6 +274,50 @@ TEST(NarrowMove, EveryMoveEqualsTheTracedFullPathBitForBit) {
   EXPECT_GT(collisions, moves / 4);
   EXPECT_GT(overlapsAtStart, 50u);
   EXPECT_GT(largeMovers, 500u);
+}
+
+// An untraced move asks the filter about every pair its traced twin asks about: a recording made
+// untraced keeps the answers by pair, and the debugger steps it traced (the full path), so a pair
+// the traced move asks and the recording lacks is reported as a divergence. Cell 64:
+//
+//   x:  0         36   46     64 66         110 114
+//   y 20 +-----------------------+-----------[M]-+   M (4×4) drops steeply onto F (leg 1) and
+//        |                       |A          /   |   slides left along it (leg 2), meeting A
+//   y 40 |                       |A        /     |   first and B, beyond A, later.
+//   y 64 +-----------------------+A------/-------+   A (2×30) is in cells (1,0) and (1,1),
+//   y 66 |           [ B ]       |A    /         |   B in (0,1) only: the untraced move lists
+//   y 72 |[==========F===========|=============] |   A before B (row by row over the move's
+//   y 80 +-----------------------+---------------+   box); leg 2's own walk meets B first.
+TEST(NarrowMove, ATracedMoveAsksTheFilterNothingItsUntracedTwinDidNotAsk) {
+  const auto scene = [](World& w) {
+    const ItemId a = w.add({64, 40, 2, 30});
+    w.add({0, 72, 128, 8});  // F
+    w.add({36, 66, 10, 6});  // B
+    return std::pair{a, w.add({110, 20, 4, 4})};
+  };
+  World lean(64), full(64);
+  const auto [a, m] = scene(lean);
+  (void)scene(full);
+  std::set<std::uint32_t> asked;
+  const auto record = [&](ItemId, ItemId other) {
+    asked.insert(other.index);
+    return response::slide;
+  };
+  const MoveResult r = lean.move(m, {40, 100}, record);
+  ASSERT_EQ(r.collisions.size(), 2u);
+  EXPECT_EQ(r.collisions[0].normal, (Vec2{0, -1}));  // onto F
+  EXPECT_EQ(r.collisions[1].other, a);               // then against A
+  EXPECT_EQ(r.position, (Vec2{66, 68}));
+  if constexpr (!kTraceCompiledIn) GTEST_SKIP() << "tracing compiled out: no reference";
+  MoveTrace trace;
+  MoveOptions traced;
+  traced.trace = &trace;
+  const MoveResult t = full.move(m, {40, 100}, [](ItemId, ItemId) { return response::slide; },
+                                 traced);
+  EXPECT_EQ(t.position, (Vec2{66, 68}));
+  ASSERT_FALSE(trace.answers.empty());
+  for (const TraceAnswer& answer : trace.answers)
+    EXPECT_EQ(asked.count(answer.other.index), 1u) << "item " << answer.other.index;
 }
 
 // A leg that leaves the move's box is swept against everything, not against the items gathered

@@ -286,10 +286,11 @@ class World {
     std::uint32_t generation;
   };
   // The first hit of a leg among every item the spatial hash gives for its cells, or among a
-  // list known to hold every item that meets the leg's hull.
+  // list known to hold every item that meets the leg's hull. `askEveryHit`: the filter is asked
+  // about every hit, not only those that would lead when met.
   template <class Visit>
   bool firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull, Filter filter,
-                     MoveTrace* trace, Collision& best, Visit&& visit) const;
+                     MoveTrace* trace, bool askEveryHit, Collision& best, Visit&& visit) const;
   bool firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
                   Vec2 goal, Filter filter, Collision& best) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
