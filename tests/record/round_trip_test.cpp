@@ -221,7 +221,7 @@ TEST(RoundTrip, AnUntracedRecordingStepsTracedWithoutAFilterDivergence) {
     answers += trace.answers.size();
   }
   if constexpr (tv::kTraceCompiledIn) {
-    EXPECT_GE(answers, 3u);  // F, B and A: the move was traced
+    EXPECT_GE(answers, 2u);  // F, then A: the move was traced
   }
 }
 

@@ -286,11 +286,16 @@ class World {
     std::uint32_t generation;
   };
   // The first hit of a leg among every item the spatial hash gives for its cells, or among a
-  // list known to hold every item that meets the leg's hull. `askEveryHit`: the filter is asked
-  // about every hit, not only those that would lead when met.
+  // list known to hold every item that meets the leg's hull.
   template <class Visit>
   bool firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull, Filter filter,
-                     MoveTrace* trace, bool askEveryHit, Collision& best, Visit&& visit) const;
+                     MoveTrace* trace, Collision& best, Visit&& visit) const;
+  // A leg's hit before the filter is asked about it.
+  struct Hit {
+    Sweep sweep;
+    Rect rect;
+    ItemId id;
+  };
   bool firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
                   Vec2 goal, Filter filter, Collision& best) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
@@ -325,6 +330,7 @@ class World {
   mutable std::vector<std::uint32_t> excluded_;
   mutable std::vector<std::uint32_t> queryScratch_;
   mutable std::vector<Candidate> candidates_;
+  mutable std::vector<Hit> hits_;
 };
 
 }  // namespace tv
