@@ -310,6 +310,7 @@ std::size_t World::memoryBytes() const {
       freeSlots_.capacity() * sizeof(std::uint32_t) + stamp_.capacity() * sizeof(std::uint32_t) +
       orders_.capacity() * sizeof(std::uint64_t) + collisions_.capacity() * sizeof(Collision) +
       (excluded_.capacity() + queryScratch_.capacity()) * sizeof(std::uint32_t) +
+      hits_.capacity() * sizeof(Hit) +
       candidates_.capacity() * sizeof(Candidate) + responses_.capacity() * sizeof(NamedResponse);
   // A std::map node: the value and three pointers and a colour, rounded up by the allocator.
   bytes += extents_.size() * (sizeof(std::pair<const double, std::size_t>) + 4 * sizeof(void*));
@@ -415,12 +416,6 @@ template <class Visit>
 bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
                           Filter filter, MoveTrace* trace, Collision& best, Visit&& visit) const {
   const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
-  // The leader so far, kept small: the Collision is filled once, for the winner.
-  bool found = false;
-  Sweep lead;
-  ItemId leadId;
-  Rect leadRect;
-  ResponseId leadResponse = response::slide;
   // Only what meets the move's bounding box (hull) can be hit: four compares before the exact
   // test.
   // A diagonal leg sweeps a hexagon, not its bounding box: an obstacle beyond a slanted side is
@@ -428,6 +423,7 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
   // interval test rejects it before the exact sweep; it rejects only by more than the rounding
   // of the projections, so it never drops a hit.
   const Slant slant(r, goal);
+  hits_.clear();
   visit([&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect) {
     const ItemId otherId{other, generation};
     if (trace) trace->candidates.push_back(otherId);
@@ -438,37 +434,42 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
     }
     const Sweep s = sweepRect(r, goal, otherRect);
     if (s.kind == SweepKind::miss) return;
-    // Add order breaks exact ties only, so the slots (a cache miss each) are read
-    // only then.
-    if (found && !before(r, goal, s, otherRect, lead, leadRect,
-                         [&] { return orders_[other] < orders_[leadId.index]; })) {
-      return;
-    }
-    const ResponseId resp = filter(selfId, otherId);
-    if (trace) trace->answers.push_back({otherId, resp});
-    if (resp == response::ignore) return;
+    hits_.push_back({s, otherRect, otherId});
+  });
+  // The filter is asked about the hits in the order they happen, until one is kept: exactly the
+  // hits up to the first kept one, however the candidates came (the cells' walk, the narrow
+  // move's list, a restored world's cells), so every path asks about the same pairs and a
+  // recording's answers serve a replay that takes another path. A heap: the few asked come out
+  // in order without sorting the rest. Add order breaks exact ties only, so the slots (a cache
+  // miss each) are read only then.
+  const auto later = [&](const Hit& a, const Hit& b) {
+    return before(r, goal, b.sweep, b.rect, a.sweep, a.rect,
+                  [&] { return orders_[b.id.index] < orders_[a.id.index]; });
+  };
+  std::make_heap(hits_.begin(), hits_.end(), later);
+  for (std::size_t n = hits_.size(); n > 0; --n) {
+    std::pop_heap(hits_.begin(), hits_.begin() + static_cast<std::ptrdiff_t>(n), later);
+    const Hit h = hits_[n - 1];
+    const ResponseId resp = filter(selfId, h.id);
+    if (trace) trace->answers.push_back({h.id, resp});
+    if (resp == response::ignore) continue;
     if (resp >= responses_.size()) {
       fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
     }
-    lead = s;
-    leadId = otherId;
-    leadRect = otherRect;
-    leadResponse = resp;
-    found = true;
-  });
-  if (!found) return false;
-  best.item = selfId;
-  best.other = leadId;
-  best.overlaps = lead.kind == SweepKind::overlap;
-  best.corner = lead.corner;
-  best.ti = lead.ti;
-  best.move = goal - r.position();
-  best.normal = lead.normal;
-  best.touch = lead.touch;
-  best.itemRect = r;
-  best.otherRect = leadRect;
-  best.response = leadResponse;
-  return true;
+    best.item = selfId;
+    best.other = h.id;
+    best.overlaps = h.sweep.kind == SweepKind::overlap;
+    best.corner = h.sweep.corner;
+    best.ti = h.sweep.ti;
+    best.move = goal - r.position();
+    best.normal = h.sweep.normal;
+    best.touch = h.sweep.touch;
+    best.itemRect = r;
+    best.otherRect = h.rect;
+    best.response = resp;
+    return true;
+  }
+  return false;
 }
 
 bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "tv/sim/rng.hpp"
@@ -125,6 +126,179 @@ TEST(SpatialHash, RandomInsertsUpdatesAndErasesKeepEveryCellExact) {
   for (const auto& [slot, r] : items) h.erase(slot);
   EXPECT_EQ(h.occupiedCells(), 0u);
   expectMatches(copy, items);
+}
+
+TEST(SpatialHash, AnItemCrossingTheFourCellBoundaryBothWaysKeepsEveryCellExact) {
+  // Small items (up to four cells) remember their entries; larger ones keep their range in a
+  // side table whose places are reused. Item 0 goes from one kind to the other and back while
+  // neighbours added after it share its cells, so every removal of its entries moves one of
+  // theirs (swap-remove) and must re-point it.
+  //
+  //   cell 10     x: 0   10   20   30   40   50
+  //               +----+----+----+----+----+
+  //   y 0         |0 1 |0 2 |  3 |    |    |     0 = the item, 1..6 = neighbours
+  //   y 10        |0 4 |0 5 |  6 |    |    |
+  //               +----+----+----+----+----+
+  SpatialHash h(10);
+  std::map<std::uint32_t, Rect> items;
+  const auto put = [&](std::uint32_t slot, const Rect& r) {
+    if (items.count(slot) != 0) {
+      h.update(slot, r);
+    } else {
+      h.insert(slot, slot * 7u, r);
+    }
+    items[slot] = r;
+    expectMatches(h, items);
+  };
+  const auto erase = [&](std::uint32_t slot) {
+    h.erase(slot);
+    items.erase(slot);
+    expectMatches(h, items);
+  };
+  put(0, {1, 1, 15, 15});  // 2×2: small
+  put(1, {2, 2, 3, 3});
+  put(2, {12, 2, 3, 3});
+  put(3, {22, 2, 3, 3});
+  put(4, {2, 12, 3, 3});
+  put(5, {12, 12, 3, 3});
+  put(6, {22, 12, 3, 3});
+  put(0, {1, 1, 25, 15});  // 3×2: large
+  put(0, {2, 2, 25, 15});  // the same cells: its rect rewritten in all six
+  put(0, {11, 1, 15, 15});  // 2×2 again, one column over
+  put(0, {1, 1, 45, 5});    // 5×1: large
+  put(0, {1, 1, 35, 5});    // 4×1: small, at the boundary
+  put(0, {1, 1, 45, 5});
+  put(7, {-30, -30, 35, 35});  // 4×4, a second place in the side table
+  erase(0);                    // frees its place...
+  put(8, {-60, 40, 25, 25});   // ...which this one takes
+  put(7, {-29, -29, 35, 35});  // 7's range is still its own
+  put(8, {-60, 40, 5, 5});     // large to small: the place is free again
+  put(0, {30, 30, 60, 5});     // and taken again
+  put(7, {3, 3, 5, 5});
+  erase(0);
+  erase(7);
+  put(9, {0, 0, 50, 50});
+  // A copy holds the same side table and goes on independently.
+  SpatialHash copy(h);
+  expectMatches(copy, items);
+  h.update(9, {5, 5, 5, 5});
+  h.erase(8);
+  std::map<std::uint32_t, Rect> copied = items;
+  items[9] = {5, 5, 5, 5};
+  items.erase(8);
+  expectMatches(h, items);
+  expectMatches(copy, copied);
+  copy.update(9, {100, 100, 35, 35});
+  copied[9] = {100, 100, 35, 35};
+  expectMatches(copy, copied);
+  expectMatches(h, items);
+}
+
+TEST(SpatialHash, AShiftThatLeavesACellEntersANewOneAndGrowsTheTableKeepsEveryCellExact) {
+  // The table starts with 64 buckets and doubles when a 33rd cell is made. Item 0 (two cells)
+  // steps one cell right: it leaves (0,0), which item 1 keeps occupied (and whose entry moves
+  // into item 0's place there), keeps (1,0), and enters (2,0) — the 33rd cell, made mid-shift.
+  //
+  //   x: 0    10   20   30
+  //      +----+----+----+
+  //      |0  1|0   |    |   ->   |   1|   0|   0|
+  //      +----+----+----+
+  //   and thirty single items along y = 50, one a cell
+  SpatialHash h(10);
+  std::map<std::uint32_t, Rect> items;
+  const auto insert = [&](std::uint32_t slot, const Rect& r) {
+    h.insert(slot, slot * 7u, r);
+    items[slot] = r;
+  };
+  insert(0, {1, 1, 15, 5});
+  insert(1, {2, 2, 3, 3});
+  for (std::uint32_t i = 0; i < 30; ++i) insert(2 + i, {i * 10.0 + 1, 51, 3, 3});
+  ASSERT_EQ(h.occupiedCells(), 32u);
+  const std::size_t before = h.memoryBytes();
+  h.update(0, {11, 1, 15, 5});
+  items[0] = {11, 1, 15, 5};
+  EXPECT_EQ(h.occupiedCells(), 33u);
+  EXPECT_GT(h.memoryBytes(), before);  // the table did grow on the way
+  expectMatches(h, items);
+  // And back: (2,0) empties and is freed, (0,0) is entered again, then item 1 goes too.
+  h.update(0, {1, 1, 15, 5});
+  items[0] = {1, 1, 15, 5};
+  expectMatches(h, items);
+  h.update(1, {31, 1, 3, 3});
+  items[1] = {31, 1, 3, 3};
+  expectMatches(h, items);
+}
+
+TEST(SpatialHash, ACrowdGatheringAndDispersingKeepsEveryCellExactAndSoDoesItsCopy) {
+  // Hundreds of items crowd into a few cells (tens of entries each, buffers traded up) and spread
+  // out again (buffers given back), moving mostly by small steps (shifts that free cells and take
+  // freed ones in the same update); halfway, a copy takes the same steps as the original.
+  SpatialHash h(10);
+  std::map<std::uint32_t, Rect> items;
+  Rng rng(23);
+  const auto randomRect = [&](double spread) {
+    const bool large = rng.uniform() < 0.1;
+    const double w = large ? rng.uniform(25, 45) : rng.uniform(0.5, 12);
+    const double hgt = large ? rng.uniform(12, 30) : rng.uniform(0.5, 12);
+    return Rect{std::floor(rng.uniform(-spread, spread)), rng.uniform(-spread, spread), w, hgt};
+  };
+  std::optional<SpatialHash> copy;
+  std::map<std::uint32_t, Rect> copied;
+  for (int step = 0; step < 30000; ++step) {
+    // Phases of 5000 steps: gathered into 40×40, spread over 400×400, and so on.
+    const double spread = (step / 5000) % 2 == 0 ? 20 : 200;
+    const auto slot = static_cast<std::uint32_t>(rng.below(300));
+    const auto it = items.find(slot);
+    const double u = rng.uniform();
+    if (it == items.end()) {
+      const Rect r = randomRect(spread);
+      h.insert(slot, slot * 7u, r);
+      items[slot] = r;
+      if (copy) {
+        copy->insert(slot, slot * 7u, r);
+        copied[slot] = r;
+      }
+    } else if (u < 0.05) {
+      h.erase(slot);
+      items.erase(it);
+      if (copy) {
+        copy->erase(slot);
+        copied.erase(slot);
+      }
+    } else {
+      Rect r = it->second;
+      if (u < 0.8) {
+        // A step, pulled towards the phase's area.
+        const Vec2 pull{r.x > spread ? -4.0 : r.x < -spread ? 4.0 : 0.0,
+                        r.y > spread ? -4.0 : r.y < -spread ? 4.0 : 0.0};
+        r = r.at(r.position() + pull + Vec2{rng.uniform(-3, 3), rng.uniform(-3, 3)});
+      } else if (u < 0.9) {
+        r = r.at({std::floor(rng.uniform(-spread, spread)), rng.uniform(-spread, spread)});
+      } else {
+        const Rect s = randomRect(spread);  // resized, often across four cells
+        r = {r.x, r.y, s.w, s.h};
+      }
+      h.update(slot, r);
+      it->second = r;
+      if (copy) {
+        copy->update(slot, r);
+        copied[slot] = r;
+      }
+    }
+    if (step == 15000) {
+      copy.emplace(h);
+      copied = items;
+    }
+    if (step % 500 == 0) {
+      expectMatches(h, items);
+      if (copy) expectMatches(*copy, copied);
+      if (HasFailure()) return;
+    }
+  }
+  expectMatches(h, items);
+  ASSERT_TRUE(copy.has_value());
+  expectMatches(*copy, copied);
+  EXPECT_EQ(copied, items);  // the same steps, the same registry
 }
 
 TEST(SpatialHash, CellsAreRecycledSoMemoryFollowsTheCellsOccupiedNow) {

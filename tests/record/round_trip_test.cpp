@@ -190,6 +190,41 @@ TEST(RoundTrip, StepGoesCallByCallAndFillsTheTrace) {
   EXPECT_GT(traced, 10u);
 }
 
+// The debugger steps a recording with a trace, so every move takes the full path there, while
+// the game recorded it untraced (the lean and narrow paths): the recorded answers (kept by pair)
+// must hold every pair the traced move asks about. M drops onto the floor F and slides left into
+// A; B lies beyond A, in a cell the slide's own walk reads before A's (cell 64).
+//
+//        B (36..46)      A (64..66, rows 0 and 1)      M (110, 20) -> goal (40, 100)
+//   y 72 [====================== F =========================]
+TEST(RoundTrip, AnUntracedRecordingStepsTracedWithoutAFilterDivergence) {
+  World world(64);
+  tv::Recorder rec;
+  world.attach(rec);
+  world.add({64, 40, 2, 30});  // A
+  world.add({0, 72, 128, 8});  // F
+  world.add({36, 66, 10, 6});  // B
+  const ItemId m = world.add({110, 20, 4, 4});
+  const tv::MoveResult r =
+      world.move(m, {40, 100}, [](ItemId, ItemId) { return tv::response::slide; });
+  ASSERT_EQ(r.collisions.size(), 2u);  // onto F, then against A
+  world.detach();
+  ASSERT_TRUE(rec.ok()) << rec.error();
+  tv::Replay replay = tv::Replay::fromBytes(rec.bytes());
+  replay.seek(0, 0);
+  tv::MoveTrace trace;
+  std::size_t answers = 0;
+  while (!replay.atEnd()) {
+    trace.clear();
+    const std::optional<tv::Divergence> d = replay.step(&trace);
+    ASSERT_FALSE(d) << d->report();
+    answers += trace.answers.size();
+  }
+  if constexpr (tv::kTraceCompiledIn) {
+    EXPECT_GE(answers, 2u);  // F, then A: the move was traced
+  }
+}
+
 }  // namespace
 
 namespace {

@@ -301,6 +301,12 @@ class World {
   template <class Visit>
   bool firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull, Filter filter,
                      MoveTrace* trace, Collision& best, Visit&& visit) const;
+  // A leg's hit before the filter is asked about it.
+  struct Hit {
+    Sweep sweep;
+    Rect rect;
+    ItemId id;
+  };
   bool firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
                   Vec2 goal, Filter filter, Collision& best) const;
   bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
@@ -335,6 +341,7 @@ class World {
   mutable std::vector<std::uint32_t> excluded_;
   mutable std::vector<std::uint32_t> queryScratch_;
   mutable std::vector<Candidate> candidates_;
+  mutable std::vector<Hit> hits_;
 };
 
 }  // namespace tv
