@@ -564,11 +564,12 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
     // Most moves in a crowd meet nothing: when every other item that meets the move's bounding
     // box is ignored by the filter, the full path would find no hit and end at the goal, so one
     // scan of the box's few cells decides it. When something kept is in reach, the legs of the
-    // built-in responses (bounce aside) stay inside that box, so they are swept against the items
-    // that meet it, gathered from the same cells, instead of walking the cells again. The filter
-    // may be asked about pairs the full path would not have asked about (it must be a pure
-    // function of the pair, as the full path already asks in an order that depends on the
-    // cells). Longer moves take the full path, whose swept walk reads fewer cells.
+    // built-in responses stay inside that box (but a bounce's, or a push out of an overlap the
+    // move starts in), so they are swept against the items that meet it, gathered from the same
+    // cells, instead of walking the cells again; a leg that leaves the box walks the cells. The
+    // scan may ask the filter about pairs the full path would not have asked about (it must be
+    // a pure function of the pair). Longer moves take the full path, whose swept walk reads
+    // fewer cells.
     const Rect to = s.rect.at(goal);
     const Box box{std::min(s.rect.x, to.x), std::min(s.rect.y, to.y),
                   std::max(s.rect.right(), to.right()), std::max(s.rect.bottom(), to.bottom())};
