@@ -310,8 +310,8 @@ std::size_t World::memoryBytes() const {
       freeSlots_.capacity() * sizeof(std::uint32_t) + stamp_.capacity() * sizeof(std::uint32_t) +
       orders_.capacity() * sizeof(std::uint64_t) + collisions_.capacity() * sizeof(Collision) +
       (excluded_.capacity() + queryScratch_.capacity()) * sizeof(std::uint32_t) +
-      hits_.capacity() * sizeof(Hit) +
-      candidates_.capacity() * sizeof(Candidate) + responses_.capacity() * sizeof(NamedResponse);
+      hits_.capacity() * sizeof(Hit) + candidates_.capacity() * sizeof(Candidate) +
+      responses_.capacity() * sizeof(NamedResponse);
   // A std::map node: the value and three pointers and a colour, rounded up by the allocator.
   bytes += extents_.size() * (sizeof(std::pair<const double, std::size_t>) + 4 * sizeof(void*));
   return bytes;
@@ -436,40 +436,49 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
     if (s.kind == SweepKind::miss) return;
     hits_.push_back({s, otherRect, otherId});
   });
-  // The filter is asked about the hits in the order they happen, until one is kept: exactly the
-  // hits up to the first kept one, however the candidates came (the cells' walk, the narrow
-  // move's list, a restored world's cells), so every path asks about the same pairs and a
-  // recording's answers serve a replay that takes another path. A heap: the few asked come out
-  // in order without sorting the rest. Add order breaks exact ties only, so the slots (a cache
-  // miss each) are read only then.
-  const auto later = [&](const Hit& a, const Hit& b) {
-    return before(r, goal, b.sweep, b.rect, a.sweep, a.rect,
-                  [&] { return orders_[b.id.index] < orders_[a.id.index]; });
-  };
-  std::make_heap(hits_.begin(), hits_.end(), later);
-  for (std::size_t n = hits_.size(); n > 0; --n) {
-    std::pop_heap(hits_.begin(), hits_.begin() + static_cast<std::ptrdiff_t>(n), later);
-    const Hit h = hits_[n - 1];
+  // The hits are put in one order that depends on them alone — their rounded times, then exact
+  // corners last, then add order — and the filter is asked about each that would lead at its
+  // turn: so the pairs asked do not depend on the order the candidates came in (the cells' walk,
+  // the narrow move's list, a restored world's cells), every path asks about the same pairs, and
+  // a recording's answers serve a replay that takes another path. The leader is still chosen on
+  // exact times; near-ties in the rounded order only mean one more pair asked. Add order breaks
+  // ties only, so the slots' orders (a cache miss each) are read only then.
+  if (hits_.size() > 1) {
+    std::sort(hits_.begin(), hits_.end(), [&](const Hit& a, const Hit& b) {
+      if (a.sweep.ti != b.sweep.ti) return a.sweep.ti < b.sweep.ti;
+      if (a.sweep.corner != b.sweep.corner) return !a.sweep.corner;
+      return orders_[a.id.index] < orders_[b.id.index];
+    });
+  }
+  const Hit* lead = nullptr;
+  ResponseId leadResponse = response::ignore;
+  for (const Hit& h : hits_) {
+    if (lead != nullptr && !before(r, goal, h.sweep, h.rect, lead->sweep, lead->rect,
+                                   [&] { return orders_[h.id.index] < orders_[lead->id.index]; })) {
+      continue;
+    }
     const ResponseId resp = filter(selfId, h.id);
     if (trace) trace->answers.push_back({h.id, resp});
     if (resp == response::ignore) continue;
     if (resp >= responses_.size()) {
       fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
     }
-    best.item = selfId;
-    best.other = h.id;
-    best.overlaps = h.sweep.kind == SweepKind::overlap;
-    best.corner = h.sweep.corner;
-    best.ti = h.sweep.ti;
-    best.move = goal - r.position();
-    best.normal = h.sweep.normal;
-    best.touch = h.sweep.touch;
-    best.itemRect = r;
-    best.otherRect = h.rect;
-    best.response = resp;
-    return true;
+    lead = &h;
+    leadResponse = resp;
   }
-  return false;
+  if (lead == nullptr) return false;
+  best.item = selfId;
+  best.other = lead->id;
+  best.overlaps = lead->sweep.kind == SweepKind::overlap;
+  best.corner = lead->sweep.corner;
+  best.ti = lead->sweep.ti;
+  best.move = goal - r.position();
+  best.normal = lead->sweep.normal;
+  best.touch = lead->sweep.touch;
+  best.itemRect = r;
+  best.otherRect = lead->rect;
+  best.response = leadResponse;
+  return true;
 }
 
 bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
