@@ -80,10 +80,10 @@ Vec2 pathAt(const Rect& start, Vec2 goal, double t0, double t) {
 
 // An event waiting in the queue. It is stale once either body's version moved on.
 struct Event {
-  double t = 0;                          // absolute, in [0, 1]
+  double t = 0;                         // absolute, in [0, 1]
   std::uint64_t first = 0, second = 0;  // add orders of the two sides: the tie-break
-  std::uint32_t a = 0, b = 0;            // bodies (a pair: a was added first)
-  std::uint32_t va = 0, vb = 0;          // their versions when it was found
+  std::uint32_t a = 0, b = 0;           // bodies (a pair: a was added first)
+  std::uint32_t va = 0, vb = 0;         // their versions when it was found
   bool pair = false;
 };
 
@@ -110,13 +110,13 @@ struct Batch::Search {
   std::vector<Body>* bodies = nullptr;
 
   // Per body.
-  std::vector<std::uint64_t> order;   // add order: the tie-break
-  std::vector<Rect> start;            // where it began, to undo a step whose last write fails
-  std::vector<Collision> staticHit;   // its first static hit, for its current version
-  std::vector<Rect> clear;            // a hull that meets no static it may hit (or empty)
-  std::vector<Rect> hulls;            // its loose hull, while building the grid
-  std::vector<std::uint32_t> visit;   // the bodies in spatial order (see BatchHullGrid)
-  std::vector<std::uint32_t> seen;    // the validation's duplicate check, by slot
+  std::vector<std::uint64_t> order;  // add order: the tie-break
+  std::vector<Rect> start;           // where it began, to undo a step whose last write fails
+  std::vector<Collision> staticHit;  // its first static hit, for its current version
+  std::vector<Rect> clear;           // a hull that meets no static it may hit (or empty)
+  std::vector<Rect> hulls;           // its loose hull, while building the grid
+  std::vector<std::uint32_t> visit;  // the bodies in spatial order (see BatchHullGrid)
+  std::vector<std::uint32_t> seen;   // the validation's duplicate check, by slot
   std::uint32_t seenEpoch = 0;
   std::vector<std::uint32_t> bodyBySlot;  // world slot -> body, kNoBody for the rest
 
@@ -195,8 +195,8 @@ struct Batch::Search {
     push({t, order[i], world->order(c.other), i, 0, b.version, 0, false});
   }
 
-  // The pair's relative sweep over the part of the tick both current paths share.
-  [[nodiscard]] PairSweep sweepPair(std::uint32_t i, std::uint32_t j) {
+  // The pair, earlier-added side first, where both are when their current paths both begin.
+  [[nodiscard]] PairSweep pairStart(std::uint32_t i, std::uint32_t j) {
     PairSweep p;
     p.a = order[i] < order[j] ? i : j;
     p.b = p.a == i ? j : i;
@@ -205,7 +205,16 @@ struct Batch::Search {
     p.from = std::max(a.t0, b.t0);
     p.pa = pathAt(a.rect, a.goal, a.t0, p.from);
     p.pb = pathAt(b.rect, b.goal, b.t0, p.from);
-    p.sweep = sweepRect(a.rect.at(p.pa), p.pa + ((a.goal - p.pa) - (b.goal - p.pb)), b.rect.at(p.pb));
+    return p;
+  }
+
+  // The pair's relative sweep over the part of the tick both current paths share.
+  [[nodiscard]] PairSweep sweepPair(std::uint32_t i, std::uint32_t j) {
+    PairSweep p = pairStart(i, j);
+    const Body& a = body(p.a);
+    const Body& b = body(p.b);
+    p.sweep =
+        sweepRect(a.rect.at(p.pa), p.pa + ((a.goal - p.pa) - (b.goal - p.pb)), b.rect.at(p.pb));
     p.hit = p.sweep.kind != SweepKind::miss;
     p.t = p.from + std::max(p.sweep.ti, 0.0) * (1.0 - p.from);
     return p;
@@ -215,14 +224,9 @@ struct Batch::Search {
   // at least does not ignore the other.
   void findPair(std::uint32_t i, std::uint32_t j) {
     if (crossed.contains(pairKey(i, j))) return;
-    PairSweep p;
-    p.a = order[i] < order[j] ? i : j;
-    p.b = p.a == i ? j : i;
+    const PairSweep p = pairStart(i, j);
     const Body& a = body(p.a);
     const Body& b = body(p.b);
-    p.from = std::max(a.t0, b.t0);
-    p.pa = pathAt(a.rect, a.goal, a.t0, p.from);
-    p.pb = pathAt(b.rect, b.goal, b.t0, p.from);
     const Rect ra = a.rect.at(p.pa), rb = b.rect.at(p.pb);
     if (!overlaps(unite(ra, a.rect.at(a.goal)), unite(rb, b.rect.at(b.goal)))) return;
     if ((*filter)(a.item, b.item) == response::ignore &&
@@ -382,7 +386,9 @@ struct Batch::Search {
   }
 };
 
-Batch::SearchPtr::~SearchPtr() { delete p_; }
+Batch::SearchPtr::~SearchPtr() {
+  delete p_;
+}
 
 Batch::Search& Batch::SearchPtr::get() {
   if (p_ == nullptr) p_ = new Search;
@@ -499,7 +505,8 @@ void Batch::step(World& world, std::span<const BatchMove> moves, Filter filter, 
     bodies_[k].count = s.counts[k + 1] - s.counts[k];
   }
   collisions_.resize(s.events.size());
-  for (std::size_t e = 0; e < s.events.size(); ++e) collisions_[s.counts[s.owner[e]]++] = s.events[e];
+  for (std::size_t e = 0; e < s.events.size(); ++e)
+    collisions_[s.counts[s.owner[e]]++] = s.events[e];
 }
 
 }  // namespace tv

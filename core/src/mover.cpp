@@ -336,21 +336,6 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
 
 namespace {
 
-// The order in which World::move takes the hits of one leg (see world.hpp): the exact time of
-// impact (overlaps first, deepest first), then ordinary hits before exact corner hits, then
-// add order. Written as World::firstHit's comparison is, so that the same hit wins.
-template <class EarlierAdded>
-bool hitsBefore(const Rect& r, Vec2 goal, const Sweep& a, const Rect& ra, const Sweep& b,
-                const Rect& rb, EarlierAdded aWasAddedFirst) {
-  if (a.kind == SweepKind::hit && b.kind == SweepKind::hit) {
-    if (const int c = detail::compareHitTimes(r, goal, a, ra, b, rb); c != 0) return c < 0;
-  } else if (a.ti != b.ti) {
-    return a.ti < b.ti;
-  }
-  if (a.corner != b.corner) return !a.corner;
-  return aWasAddedFirst();
-}
-
 // The built-in responses whose legs stay inside the move's bounding box (a push out of an
 // overlap may leave it: that is checked leg by leg).
 bool staysInTheBox(ResponseId r) {
@@ -527,8 +512,8 @@ bool Mover::settleFromOneScan(World& world, ItemId id, const Rect& start, Vec2 g
         }
         const Sweep s = sweepRect(r, to, o.rect);
         if (s.kind == SweepKind::miss) continue;
-        if (lead && !hitsBefore(r, to, s, o.rect, leadSweep, lead->rect,
-                                [&] { return earlierAdded(o, *lead); })) {
+        if (lead && !detail::hitBefore(r, to, s, o.rect, leadSweep, lead->rect,
+                                       [&] { return earlierAdded(o, *lead); })) {
           continue;
         }
         lead = &o;

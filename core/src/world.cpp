@@ -396,20 +396,6 @@ class Slant {
   double lo_ = 0.0, hi_ = 0.0;
 };
 
-// Two hits are ordered on their exact times of impact, not the rounded ti: faces less than a
-// rounding apart share a ti, and the farther one's touch lies inside the nearer face.
-template <class EarlierAdded>
-bool before(const Rect& r, Vec2 goal, const Sweep& a, const Rect& ra, const Sweep& b,
-            const Rect& rb, EarlierAdded aWasAddedFirst) {
-  if (a.kind == SweepKind::hit && b.kind == SweepKind::hit) {
-    if (const int c = detail::compareHitTimes(r, goal, a, ra, b, rb); c != 0) return c < 0;
-  } else if (a.ti != b.ti) {
-    return a.ti < b.ti;
-  }
-  if (a.corner != b.corner) return !a.corner;
-  return aWasAddedFirst();
-}
-
 }  // namespace
 
 template <class Visit>
@@ -453,8 +439,9 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
   const Hit* lead = nullptr;
   ResponseId leadResponse = response::ignore;
   for (const Hit& h : hits_) {
-    if (lead != nullptr && !before(r, goal, h.sweep, h.rect, lead->sweep, lead->rect,
-                                   [&] { return orders_[h.id.index] < orders_[lead->id.index]; })) {
+    if (lead != nullptr &&
+        !detail::hitBefore(r, goal, h.sweep, h.rect, lead->sweep, lead->rect,
+                           [&] { return orders_[h.id.index] < orders_[lead->id.index]; })) {
       continue;
     }
     const ResponseId resp = filter(selfId, h.id);
