@@ -49,10 +49,6 @@ void SpatialHash::insert(std::uint32_t slot, std::uint32_t generation, const Rec
   add(slot, generation, r, grid_.cellsHolding(r));
 }
 
-void SpatialHash::erase(std::uint32_t slot) {
-  drop(slot);
-}
-
 void SpatialHash::update(std::uint32_t slot, const Rect& r) {
   Registration& g = regs_[slot];
   const CellRange cells = grid_.cellsHolding(r);

@@ -16,6 +16,7 @@
 //   long moves) is recomputed as cells empty, so the cost of a move does not depend on where
 //   items used to be.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -52,7 +53,7 @@ class SpatialHash {
   /// Registers `slot` (not registered yet) with its rect.
   void insert(std::uint32_t slot, std::uint32_t generation, const Rect& r);
   /// Forgets `slot` (registered).
-  void erase(std::uint32_t slot);
+  void erase(std::uint32_t slot) { drop(slot); }
   /// Moves `slot`'s registration to `r`.
   void update(std::uint32_t slot, const Rect& r);
 
@@ -82,6 +83,22 @@ class SpatialHash {
     const Registration& g = regs_[slot];
     const std::size_t n = g.count();
     for (std::size_t i = 0; i < n; ++i) cells_[g.cell[i]][g.at[i]].rect = to;
+  }
+
+  /// The part of `cells` that can hold items: nothing lies outside liveBox().
+  [[nodiscard]] CellRange live(const CellRange& cells) const {
+    return {std::max(cells.x0, box_.x0), std::max(cells.y0, box_.y0), std::min(cells.x1, box_.x1),
+            std::min(cells.y1, box_.y1)};
+  }
+  /// Calls f(const HashEntry&) for the entries of every cell of `cells`, row by row, until f
+  /// returns true; returns whether one did. An item in several of them is met once in each.
+  template <class F>
+  [[nodiscard]] bool anyIn(const CellRange& cells, F&& f) const {
+    for (std::int64_t cy = cells.y0; cy <= cells.y1; ++cy)
+      for (std::int64_t cx = cells.x0; cx <= cells.x1; ++cx)
+        for (const HashEntry& e : items({cx, cy}))
+          if (f(e)) return true;
+    return false;
   }
 
   /// The entries of a cell; empty when no item is registered there.

@@ -333,7 +333,6 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
   const std::uint32_t epoch = nextEpoch();
   if (self != ItemId::kNone) stamp_[self] = epoch;
   const detail::SpatialHash& hash = *hash_;
-  const CellRange& used = hash.liveBox();
   const auto visit = [&](Cell c) {
     if (trace) trace->cells.push_back(c);
     for (const detail::HashEntry& e : hash.items(c)) {
@@ -346,16 +345,14 @@ void World::forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const
     }
   };
   // Nothing lies outside the cells that ever held an item: both walks are clipped to them.
-  const CellRange all = grid_.cellsOf(hull);
-  const CellRange box{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
-                      std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
+  const CellRange box = hash.live(grid_.cellsOf(hull));
   // The swept walk pays only where it skips cells of the bounding box: not along an axis (the
   // hull is the box), nor when the box spans a few cells (it would skip one or two, for more
   // arithmetic than those cost to scan).
   constexpr std::int64_t kDirectCells = 4;
   const bool alongAnAxis = goal.x == r.x || goal.y == r.y;
   if (broad == BroadPhase::swept && box.count() > kDirectCells && !alongAnAxis) {
-    grid_.forEachSweptCell(r, goal, visit, used);
+    grid_.forEachSweptCell(r, goal, visit, hash.liveBox());
   } else {
     Grid::forEachCell(box, visit);
   }
@@ -598,25 +595,15 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
     } else {
       // Items are registered in the cells their half-open extent meets, so an item whose
       // interior meets the box shares one of the cells the half-open box meets.
-      const CellRange all = grid_.cellsHolding(box.x0, box.y0, box.x1, box.y1);
-      const CellRange& used = hash.liveBox();
-      const CellRange cells{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
-                            std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
-      const auto any = [&](const auto& f) {
-        for (std::int64_t cy = cells.y0; cy <= cells.y1; ++cy)
-          for (std::int64_t cx = cells.x0; cx <= cells.x1; ++cx)
-            for (const detail::HashEntry& e : hash.items({cx, cy}))
-              if (f(e)) return true;
-        return false;
-      };
+      const CellRange cells = hash.live(grid_.cellsHolding(box.x0, box.y0, box.x1, box.y1));
       if (cells.count() <= 4) {
-        if (!any(kept)) {
+        if (!hash.anyIn(cells, kept)) {
           collisions_.clear();
           place(id.index, to);
           return {goal, {}};
         }
         candidates_.clear();
-        (void)any(gather);
+        (void)hash.anyIn(cells, gather);
         narrow = true;
       }
     }
@@ -750,25 +737,17 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
   // half-open extent meets. Only an item in several cells needs a visit stamp, so that the
   // filter is asked once about each item (a filter may gather what it is asked about).
   const detail::SpatialHash& hash = *hash_;
-  const CellRange all = grid_.cellsHolding(r);
-  const CellRange& used = hash.liveBox();
-  const CellRange cells{std::max(all.x0, used.x0), std::max(all.y0, used.y0),
-                        std::min(all.x1, used.x1), std::min(all.y1, used.y1)};
+  const CellRange cells = hash.live(grid_.cellsHolding(r));
   if (cells.count() <= 4) {
     const std::uint32_t epoch = cells.count() > 1 ? nextEpoch() : 0;
-    for (std::int64_t cy = cells.y0; cy <= cells.y1; ++cy) {
-      for (std::int64_t cx = cells.x0; cx <= cells.x1; ++cx) {
-        for (const detail::HashEntry& e : hash.items({cx, cy})) {
-          if (e.slot() == self || !overlaps(r, e.rect)) continue;
-          if (epoch != 0 && e.shared()) {
-            if (stamp_[e.slot()] == epoch) continue;
-            stamp_[e.slot()] = epoch;
-          }
-          if (filter(skip, ItemId{e.slot(), e.generation}) != response::ignore) return true;
-        }
+    return hash.anyIn(cells, [&](const detail::HashEntry& e) {
+      if (e.slot() == self || !overlaps(r, e.rect)) return false;
+      if (epoch != 0 && e.shared()) {
+        if (stamp_[e.slot()] == epoch) return false;
+        stamp_[e.slot()] = epoch;
       }
-    }
-    return false;
+      return filter(skip, ItemId{e.slot(), e.generation}) != response::ignore;
+    });
   }
   bool any = false;
   forEachCandidate(self, r, r.position(), r, BroadPhase::bounds, nullptr,
