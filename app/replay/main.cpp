@@ -3,6 +3,8 @@
 //
 //   tv-replay FILE                      summary, with a full replay and its rate
 //   tv-replay FILE --validate           exit 1 with the divergence report if it does not replay
+//   tv-replay FILE --validate --traced  the same, every call traced and from every keyframe, as
+//                                       the debugger re-runs them
 //   tv-replay FILE --stats              per item: moves, hits, max speed, moves ending in a solid
 //   tv-replay FILE --mover NAME [--substep L] [--updates-as-moves] [--far D]
 //                                       re-run the moves with another mover and compare
@@ -28,19 +30,22 @@ struct UsageError {
 
 struct Options {
   std::string file;
-  bool validate = false, stats = false, updatesAsMoves = false, tolerant = false;
+  bool validate = false, traced = false, stats = false, updatesAsMoves = false, tolerant = false;
   std::optional<std::string> mover;
   std::optional<double> substep;
   double far = 64.0;
 };
 
 constexpr const char* kUsage =
-    "usage: tv-replay FILE [--validate | --stats | --mover NAME [--substep L] [--updates-as-moves] "
-    "[--far D]] [--tolerant]\n"
+    "usage: tv-replay FILE [--validate [--traced] | --stats | --mover NAME [--substep L] "
+    "[--updates-as-moves] [--far D]] [--tolerant]\n"
     "  (no flag)           summary: frames, calls, moves, collisions, items, size, bytes per move, "
     "replay rate\n"
     "  --validate          replay every call and compare it with the recording; exit 1 on a "
     "divergence\n"
+    "  --traced            with --validate: every call traced, and from each keyframe on a world "
+    "rebuilt from it,\n"
+    "                      as the debugger re-runs them: what it shows is what the game got\n"
     "  --stats             per moving item: moves, hits, longest move, moves that ended inside a "
     "solid\n"
     "  --mover NAME        what-if: make every recorded move with this mover instead\n"
@@ -66,6 +71,8 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     } else if (a == "--validate") {
       o.validate = true;
+    } else if (a == "--traced") {
+      o.traced = true;
     } else if (a == "--stats") {
       o.stats = true;
     } else if (a == "--tolerant") {
@@ -93,6 +100,7 @@ Options parse(int argc, char** argv) {
   if ((o.validate + o.stats + o.mover.has_value()) > 1) {
     throw UsageError{"--validate, --stats and --mover are separate reports: pick one"};
   }
+  if (o.traced && !o.validate) throw UsageError{"--traced goes with --validate"};
   if ((o.substep || o.updatesAsMoves) && !o.mover) {
     throw UsageError{"--substep and --updates-as-moves go with --mover"};
   }
@@ -141,15 +149,18 @@ int summary(tv::Replay& r) {
   return 0;
 }
 
-int validate(tv::Replay& r) {
-  const std::optional<tv::Divergence> d = r.validate();
+int validate(tv::Replay& r, bool traced) {
+  const std::optional<tv::Divergence> d =
+      r.validate({}, traced ? tv::Replay::Tracing::on : tv::Replay::Tracing::off);
   if (d) {
+    if (traced) std::cout << "traced (as the debugger re-runs it): ";
     std::cout << d->report();
     return 1;
   }
-  std::printf("ok: %llu frames, %llu calls replayed bit for bit%s\n",
+  std::printf("ok: %llu frames, %llu calls replayed bit for bit%s%s\n",
               static_cast<unsigned long long>(r.summary().frames),
-              static_cast<unsigned long long>(r.summary().calls), damage(r.summary()).c_str());
+              static_cast<unsigned long long>(r.summary().calls),
+              traced ? ", traced and from every keyframe" : "", damage(r.summary()).c_str());
   return 0;
 }
 
@@ -255,7 +266,7 @@ int main(int argc, char** argv) {
     }
     tv::Replay r = tv::Replay::open(o.file, ro);
     printWarnings(r);
-    if (o.validate) return validate(r);
+    if (o.validate) return validate(r, o.traced);
     if (o.stats) return stats(r);
     if (o.mover) return whatIf(r, o);
     return summary(r);

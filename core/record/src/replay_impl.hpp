@@ -63,6 +63,7 @@ struct Replay::Impl {
   std::uint64_t frame = 0;
   std::uint32_t callIndex = 0;
   std::optional<Divergence> pendingDivergence;  // a keyframe that differs from the world
+  bool restoreAtKeyframes = false;  // validate(Tracing::on): go on from each keyframe, as seek
   std::map<std::uint32_t, std::unique_ptr<Mover>> movers;
   Batch batch;
   std::unique_ptr<Mover> whatIfMover;
