@@ -42,7 +42,7 @@ int compareFiles(const std::string& name, const std::string& golden, const std::
   if (!want) {
     std::fprintf(stderr,
                  "%s: cannot read the golden %s\n  actual: %s\n  (render the goldens with "
-                 "app/headless/regenerate_goldens.sh or the tv-goldens target)\n",
+                 "app/render/regenerate_goldens.sh or the tv-goldens target)\n",
                  name.c_str(), golden.c_str(), actual.c_str());
     return 2;
   }
@@ -62,7 +62,7 @@ int compareFiles(const std::string& name, const std::string& golden, const std::
     std::fprintf(stderr,
                  "%s: differs from the golden: %s\n"
                  "  golden: %s\n  actual: %s\n%s%s%s"
-                 "  if the change is intended: app/headless/regenerate_goldens.sh (target "
+                 "  if the change is intended: app/render/regenerate_goldens.sh (target "
                  "tv-goldens)\n",
                  name.c_str(), c.describe(tol).c_str(), golden.c_str(), actual.c_str(),
                  diff.empty() ? "" : "  diff:   ", diff.c_str(),
