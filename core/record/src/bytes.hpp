@@ -7,6 +7,7 @@
 // checked against them before anything is allocated, and every failure throws tv::Error naming
 // the byte offset and the frame.
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -22,31 +23,68 @@ namespace tv::rec {
 
 // -- writing ----------------------------------------------------------------------------------
 
-struct Out {
-  std::vector<std::uint8_t> b;
+// A growing byte buffer written without a capacity test per byte: each writer asks for the room
+// it needs once (varint: 10 bytes, a Group: 33), then stores through a pointer.
+class Out {
+ public:
+  [[nodiscard]] std::size_t size() const { return n_; }
+  [[nodiscard]] const std::uint8_t* data() const { return buf_.data(); }
+  [[nodiscard]] std::uint8_t& at(std::size_t i) { return buf_[i]; }
+  void clear() { n_ = 0; }
+  void reserve(std::size_t n) {
+    if (buf_.size() < n) buf_.resize(n);
+  }
+  [[nodiscard]] std::vector<std::uint8_t> bytes() const { return {buf_.data(), buf_.data() + n_}; }
 
-  void u8(std::uint8_t v) { b.push_back(v); }
+  void room(std::size_t k) {
+    if (buf_.size() - n_ < k) grow(k);
+  }
+  void u8(std::uint8_t v) {
+    room(1);
+    buf_[n_++] = v;
+  }
   void u32(std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) b.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    room(4);
+    for (int i = 0; i < 4; ++i) buf_[n_++] = static_cast<std::uint8_t>(v >> (8 * i));
   }
   void u64(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) b.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    room(8);
+    for (int i = 0; i < 8; ++i) buf_[n_++] = static_cast<std::uint8_t>(v >> (8 * i));
   }
   void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
   void varint(std::uint64_t v) {
+    room(10);
+    std::uint8_t* p = buf_.data() + n_;
+    std::uint8_t* const start = p;
     while (v >= 0x80) {
-      b.push_back(static_cast<std::uint8_t>(v | 0x80));
+      *p++ = static_cast<std::uint8_t>(v | 0x80);
       v >>= 7;
     }
-    b.push_back(static_cast<std::uint8_t>(v));
+    *p++ = static_cast<std::uint8_t>(v);
+    n_ += static_cast<std::size_t>(p - start);
   }
   void zigzag(std::int64_t v) {
     varint((static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63));
   }
   void str(std::string_view s) {
     varint(s.size());
-    b.insert(b.end(), s.begin(), s.end());
+    room(s.size());
+    if (!s.empty()) std::memcpy(buf_.data() + n_, s.data(), s.size());
+    n_ += s.size();
   }
+  void raw(const void* data, std::size_t n) {
+    room(n);
+    if (n) std::memcpy(buf_.data() + n_, data, n);
+    n_ += n;
+  }
+
+ private:
+  friend class Group;
+  [[gnu::noinline]] void grow(std::size_t k) {
+    buf_.resize(std::max(buf_.size() * 2, n_ + k + 256));
+  }
+  std::vector<std::uint8_t> buf_;
+  std::size_t n_ = 0;
 };
 
 [[nodiscard]] inline bool sameBits(double a, double b) {
@@ -60,7 +98,11 @@ enum : std::uint8_t { kP0 = 0, kP1 = 1, kF32 = 2, kF64 = 3 };
 // (the reader decodes in the same order).
 class Group {
  public:
-  explicit Group(Out& o) : o_(o), at_(o.b.size()) { o.b.push_back(0); }
+  // Room for the code byte and four f64 values, so that put() never tests the capacity.
+  explicit Group(Out& o) : o_(o), at_(o.n_) {
+    o.room(33);
+    o.buf_[o.n_++] = 0;
+  }
   // Most values are their first prediction: code 0, nothing to write.
   void put(double v, double p0, double p1, double base = 0.0) {
     if (sameBits(v, p0)) {
@@ -85,12 +127,15 @@ class Group {
         if (sameBits(static_cast<double>(f), d) && sameBits(base + static_cast<double>(f), v)) {
           code = kF32;
           std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
-          for (int i = 0; i < 4; ++i) o_.b.push_back(static_cast<std::uint8_t>(bits >> (8 * i)));
+          for (int i = 0; i < 4; ++i) o_.buf_[o_.n_++] = static_cast<std::uint8_t>(bits >> (8 * i));
         }
       }
-      if (code == kF64) o_.f64(v);
+      if (code == kF64) {
+        const auto bits = std::bit_cast<std::uint64_t>(v);
+        for (int i = 0; i < 8; ++i) o_.buf_[o_.n_++] = static_cast<std::uint8_t>(bits >> (8 * i));
+      }
     }
-    o_.b[at_] = static_cast<std::uint8_t>(o_.b[at_] | (code << (2 * n_)));
+    o_.buf_[at_] = static_cast<std::uint8_t>(o_.buf_[at_] | (code << (2 * n_)));
     ++n_;
   }
 

@@ -3,8 +3,11 @@
 
 #include "format.hpp"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace tv::rec {
 
@@ -64,6 +67,22 @@ bool answersByPair(std::span<const Answer> answers) {
     }
   }
   return true;
+}
+
+std::array<std::uint8_t, kHeaderSize> fileHeader(double cellSize, std::uint32_t keyframeEvery) {
+  Out h;
+  for (const char c : kMagic) h.u8(static_cast<std::uint8_t>(c));
+  h.u8(static_cast<std::uint8_t>(kVersionMajor & 0xFF));
+  h.u8(static_cast<std::uint8_t>(kVersionMajor >> 8));
+  h.u8(static_cast<std::uint8_t>(kVersionMinor & 0xFF));
+  h.u8(static_cast<std::uint8_t>(kVersionMinor >> 8));
+  h.f64(cellSize);
+  h.u32(keyframeEvery);
+  h.u32(0);  // flags, none yet
+  h.u32(static_cast<std::uint32_t>(::crc32(0, h.data(), static_cast<uInt>(h.size()))));
+  std::array<std::uint8_t, kHeaderSize> out{};
+  std::memcpy(out.data(), h.data(), kHeaderSize);
+  return out;
 }
 
 // [SECTION] model --------------------------------------------------------------------------------
@@ -168,9 +187,9 @@ void Encoder::add(ItemId, const Rect& r) {
 }
 
 void Encoder::remove(ItemId id) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::remove));
-  out.b[at] |= item(id.index);
+  out.at(at) |= item(id.index);
   Model::Slot& s = model.slots[id.index];
   model.cells -= std::min(model.cells, cellCount(model.cellSize, s.rect));
   s.alive = false;
@@ -179,9 +198,9 @@ void Encoder::remove(ItemId id) {
 }
 
 void Encoder::update(ItemId id, const Rect& r) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::update));
-  out.b[at] |= item(id.index);
+  out.at(at) |= item(id.index);
   Model::Slot& s = model.slots[id.index];
   Group g(out);
   g.put(r.x, s.rect.x + s.lastDelta.x, s.rect.x, s.rect.x);
@@ -312,7 +331,7 @@ void Encoder::legBlock(std::span<const Leg> legs) {
 void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
                    const MoveResult& r, std::span<const Answer> answers,
                    std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(kind));
   std::uint8_t flags = item(id.index);
   std::uint8_t extras = static_cast<std::uint8_t>(
@@ -329,7 +348,7 @@ void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
     if (extras & kLimit) out.varint(static_cast<std::uint64_t>(o.maxResponses));
   }
   if (free) flags |= kFree;
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   goal(s, goalPos);
   const Vec2 d = goalPos - start.position();
   if (sameBits(start.x + d.x, goalPos.x) && sameBits(start.y + d.y, goalPos.y)) s.lastDelta = d;
@@ -342,7 +361,7 @@ void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
 void Encoder::moverMove(std::uint32_t mover, bool define, const MoverSpec& spec, ItemId id,
                         const Rect& start, Vec2 goalPos, const MoveResult& r,
                         std::span<const Answer> answers, std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::moverMove));
   std::uint8_t flags = item(id.index);
   out.varint(mover);
@@ -362,7 +381,7 @@ void Encoder::moverMove(std::uint32_t mover, bool define, const MoverSpec& spec,
   const bool free = r.collisions.empty() && sameBits(r.position.x, goalPos.x) &&
                     sameBits(r.position.y, goalPos.y);
   if (free) flags |= kFree;
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   Model::Slot& s = model.slots[id.index];
   (void)start;  // the model holds it (the recorder checks they agree)
   goal(s, goalPos);
@@ -376,7 +395,7 @@ void Encoder::moverMove(std::uint32_t mover, bool define, const MoverSpec& spec,
 
 void Encoder::project(const Rect& rect, Vec2 goalPos, const MoveOptions& o, const MoveResult& r,
                       std::span<const Answer> answers, std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::project));
   std::uint8_t flags = 0;
   const std::uint8_t extras = static_cast<std::uint8_t>(
@@ -391,7 +410,7 @@ void Encoder::project(const Rect& rect, Vec2 goalPos, const MoveOptions& o, cons
   const bool free = r.collisions.empty() && sameBits(r.position.x, goalPos.x) &&
                     sameBits(r.position.y, goalPos.y);
   if (free) flags |= kFree;
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   {
     Group g(out);
     g.put(rect.x, 0, 0);
@@ -421,11 +440,11 @@ void foundList(Out& out, std::span<const ItemId> found, std::uint32_t base) {
 }  // namespace
 
 void Encoder::queryRect(const Rect& r, ItemId skip, std::span<const ItemId> found) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::queryRect));
   Rect p;
   if (skip.valid()) {
-    out.b[at] |= static_cast<std::uint8_t>(kSkipValid | item(skip.index));
+    out.at(at) |= static_cast<std::uint8_t>(kSkipValid | item(skip.index));
     p = model.slots[skip.index].rect;
   }
   Group g(out);
@@ -470,7 +489,7 @@ void Encoder::querySegment(Vec2 a, Vec2 b, std::span<const SegmentHit> hits) {
 }
 
 void Encoder::anyOverlap(const Rect& r, ItemId skip, bool any, std::span<const Answer> answers) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::anyOverlap));
   Rect p;
   std::uint8_t flags =
@@ -479,7 +498,7 @@ void Encoder::anyOverlap(const Rect& r, ItemId skip, bool any, std::span<const A
     flags |= static_cast<std::uint8_t>(kSkipValid | item(skip.index));
     p = model.slots[skip.index].rect;
   }
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   Group g(out);
   g.put(r.x, p.x, 0);
   g.put(r.y, p.y, 0);
@@ -494,15 +513,16 @@ void Encoder::addResponse(std::string_view name) {
   model.responses.emplace_back(name);
 }
 
-void Encoder::batch(std::span<const BatchMove> moves, int maxEvents, const Batch& b,
-                    std::span<const Answer> answers, std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+void Encoder::batch(std::span<const BatchMove> moves, int maxEvents,
+                    std::span<const BatchOutcome> outcomes, std::span<const Answer> answers,
+                    std::span<const Leg> legs) {
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::batchStep));
   const std::uint8_t extras = static_cast<std::uint8_t>(
       (maxEvents != kDefaultMaxEvents ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
       (!legs.empty() ? kHasLegs : 0));
   if (extras) {
-    out.b[at] |= kExtras;
+    out.at(at) |= kExtras;
     out.u8(extras);
     if (extras & kLimit) out.varint(static_cast<std::uint64_t>(maxEvents));
   }
@@ -516,7 +536,7 @@ void Encoder::batch(std::span<const BatchMove> moves, int maxEvents, const Batch
     if (sameBits(s.rect.x + d.x, m.goal.x) && sameBits(s.rect.y + d.y, m.goal.y)) s.lastDelta = d;
   }
   for (std::size_t i = 0; i < moves.size(); ++i) {
-    const BatchOutcome o = b.outcome(i);
+    const BatchOutcome& o = outcomes[i];
     result(o.position, moves[i].goal, model.slots[moves[i].item.index].rect, o.collisions,
            moves[i].item);
   }
@@ -524,7 +544,7 @@ void Encoder::batch(std::span<const BatchMove> moves, int maxEvents, const Batch
   if (extras & kHasLegs) legBlock(legs);
   for (std::size_t i = 0; i < moves.size(); ++i) {
     Model::Slot& s = model.slots[moves[i].item.index];
-    s.rect = s.rect.at(b.outcome(i).position);
+    s.rect = s.rect.at(outcomes[i].position);
   }
 }
 

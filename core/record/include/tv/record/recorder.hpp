@@ -13,10 +13,16 @@
 /// A recorder records one attachment: after detach (or close) it records nothing more. Detach it
 /// (or close it) before the world or the FixedStep it watches is destroyed.
 ///
-/// A frame's calls are written and flushed when the frame ends, so the file of a game that
-/// crashed replays up to its last whole frame. An I/O error mid-game (disk full) stops the
-/// recording — `ok()` turns false and `error()` says why — and the game goes on.
+/// The game's thread only copies each call's inputs and results into memory; a thread of the
+/// recorder's own encodes them, checksums each frame and writes it (flushed) once the frame is
+/// handed over — at `frame()`, or a FixedStep's advance. So the file of a game that crashed
+/// replays up to its last whole frame handed over: when a file recorder is open, a fatal signal
+/// (SIGSEGV, SIGABRT, ...), std::terminate or exit() first waits (at most a few seconds) for the
+/// writer to write what it was given (see RecorderOptions::flushOnCrash for what is covered).
+/// An I/O error mid-game (disk full) stops the recording — `ok()` turns false and `error()` says
+/// why, once the writer has met it — and the game goes on.
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -33,6 +39,20 @@ struct RecorderOptions {
   /// Frames between keyframes (whole-world snapshots), so that seeking costs at most this many
   /// frames of replay. Range [1, 2^20]; default 64.
   std::uint32_t keyframeEvery = 64;
+  /// Encode and write on a thread of the recorder's own (the game's thread only copies each
+  /// call into memory). false: everything on the game's thread, at each frame's end. The bytes
+  /// written are the same either way.
+  bool background = true;
+  /// Most bytes of captured calls waiting for the writer (at least 2 MiB; default 64 MiB). A
+  /// game that makes calls faster than they can be written waits at this bound rather than
+  /// fill memory (`stalls()` counts the waits).
+  std::size_t maxQueueBytes = std::size_t{64} << 20;
+  /// For a recorder writing a file: a fatal signal (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT,
+  /// SIGINT, SIGTERM, SIGHUP — each only where the game left the default action), an uncaught
+  /// exception (std::terminate) or exit() waits up to 2 s (exit: 5 s) for the writer to write
+  /// every frame handed over, then the process ends as it would have. Not covered: SIGKILL,
+  /// _exit, a crash of the writer's own thread, the frame being played, the end mark.
+  bool flushOnCrash = true;
 };
 
 class Recorder final : public WorldObserver {
@@ -60,15 +80,23 @@ class Recorder final : public WorldObserver {
   /// FixedStep it was attached to. The recorder records nothing after it.
   void close();
 
-  [[nodiscard]] bool ok() const { return error_.empty(); }
-  [[nodiscard]] const std::string& error() const { return error_; }
+  /// False once the recording stopped on an error (known to the game's thread once the writer
+  /// met it; after close(), always).
+  [[nodiscard]] bool ok() const;
+  [[nodiscard]] const std::string& error() const;
+  /// Waits until the writer has written every frame handed over so far.
+  void sync() const;
+  /// Frames handed over (each frame() or FixedStep advance; close() hands over the last).
   [[nodiscard]] std::uint64_t frames() const { return frames_; }
   [[nodiscard]] std::uint64_t calls() const { return calls_; }
   [[nodiscard]] std::uint64_t moves() const { return moves_; }
-  /// Bytes written so far (file size once closed).
-  [[nodiscard]] std::uint64_t size() const { return size_; }
-  /// The whole recording, for a recorder made without a path.
-  [[nodiscard]] const std::vector<std::uint8_t>& bytes() const { return memory_; }
+  /// Bytes written of the frames handed over (waits for the writer); the file size once closed.
+  [[nodiscard]] std::uint64_t size() const;
+  /// The recording so far (waits for the writer), for a recorder made without a path: the
+  /// whole file once closed. The reference stays valid, unchanged, until the next frame ends.
+  [[nodiscard]] const std::vector<std::uint8_t>& bytes() const;
+  /// Times the game's thread waited because the writer was maxQueueBytes behind.
+  [[nodiscard]] std::uint64_t stalls() const;
 
   // WorldObserver
   void attached(const World& world) override;
@@ -94,12 +122,11 @@ class Recorder final : public WorldObserver {
   void sourceGone(const void* source) override;
 
  private:
-  void writeBytes(const std::uint8_t* data, std::size_t n);
-  struct Impl;  // encoder state, file, keyframe bookkeeping (core/record/src)
+  struct Impl;  // the capture pipe, the writer and its thread (core/record/src)
   std::unique_ptr<Impl> impl_;
-  std::vector<std::uint8_t> memory_;
-  std::string error_;
-  std::uint64_t frames_ = 0, calls_ = 0, moves_ = 0, size_ = 0;
+  std::vector<std::uint8_t> memory_;  // written by the writer's thread
+  mutable std::string error_;
+  std::uint64_t frames_ = 0, calls_ = 0, moves_ = 0, size_ = 0, stalls_ = 0;
 };
 
 }  // namespace tv
