@@ -162,29 +162,30 @@ class In {
   void setFrame(std::uint64_t f) { frame_ = f; }
 
   [[noreturn]] void fail(std::string_view what) const { failAt(offset(), what); }
-  [[noreturn]] void failAt(std::uint64_t at, std::string_view what) const {
+  [[noreturn, gnu::cold, gnu::noinline]] void failAt(std::uint64_t at,
+                                                     std::string_view what) const {
     tv::fail("tv::Replay", "byte " + std::to_string(at) + " (frame " + std::to_string(frame_) +
                                "): " + std::string(what));
   }
 
-  void need(std::size_t n, std::string_view what) const {
-    if (left() < n) {
-      fail(std::string(what) + " needs " + std::to_string(n) + " bytes, only " +
-           std::to_string(left()) + " left in the chunk");
-    }
+  // Every read below is a bounds test inline and, when it fails, a call to a cold function
+  // that builds the message: a whole recording is read at a few instructions per byte.
+  [[gnu::always_inline]] void need(std::size_t n, std::string_view what) const {
+    if (left() < n) [[unlikely]]
+      failNeed(n, what);
   }
-  std::uint8_t u8(std::string_view what) {
+  [[gnu::always_inline]] std::uint8_t u8(std::string_view what) {
     need(1, what);
     return *p_++;
   }
-  std::uint32_t u32(std::string_view what) {
+  [[gnu::always_inline]] std::uint32_t u32(std::string_view what) {
     need(4, what);
     std::uint32_t v = 0;
     for (int i = 0; i < 4; ++i) v |= std::uint32_t{p_[i]} << (8 * i);
     p_ += 4;
     return v;
   }
-  std::uint64_t u64(std::string_view what) {
+  [[gnu::always_inline]] std::uint64_t u64(std::string_view what) {
     need(8, what);
     std::uint64_t v = 0;
     for (int i = 0; i < 8; ++i) v |= std::uint64_t{p_[i]} << (8 * i);
@@ -192,25 +193,18 @@ class In {
     return v;
   }
   // A double that must be finite (every value tv records is).
-  double f64(std::string_view what) {
-    const std::uint64_t at = offset();
+  [[gnu::always_inline]] double f64(std::string_view what) {
     const double v = std::bit_cast<double>(u64(what));
-    if (!std::isfinite(v)) failAt(at, std::string(what) + " is " + tv::formatNumber(v));
+    if (!std::isfinite(v)) [[unlikely]]
+      failValue(offset() - 8, what, v);
     return v;
   }
-  std::uint64_t varint(std::string_view what) {
-    const std::uint64_t at = offset();
-    std::uint64_t v = 0;
-    for (int shift = 0; shift < 64; shift += 7) {
-      if (p_ == end_) failAt(at, std::string(what) + ": varint cut by the end of the chunk");
-      const std::uint8_t byte = *p_++;
-      if (shift == 63 && byte > 1) failAt(at, std::string(what) + ": varint over 64 bits");
-      v |= std::uint64_t{byte & 0x7Fu} << shift;
-      if ((byte & 0x80) == 0) return v;
-    }
-    failAt(at, std::string(what) + ": varint over 64 bits");
+  [[gnu::always_inline]] std::uint64_t varint(std::string_view what) {
+    if (p_ != end_ && *p_ < 0x80) [[likely]]
+      return *p_++;  // most are one byte
+    return varintLong(what);
   }
-  std::int64_t zigzag(std::string_view what) {
+  [[gnu::always_inline]] std::int64_t zigzag(std::string_view what) {
     const std::uint64_t u = varint(what);
     return static_cast<std::int64_t>(u >> 1) ^ -static_cast<std::int64_t>(u & 1);
   }
@@ -241,8 +235,29 @@ class In {
     return s;
   }
 
+  [[noreturn, gnu::cold, gnu::noinline]] void failValue(std::uint64_t at, std::string_view what,
+                                                        double v) const {
+    failAt(at, std::string(what) + " is " + tv::formatNumber(v));
+  }
+
  private:
   friend class GroupIn;
+  [[noreturn, gnu::cold, gnu::noinline]] void failNeed(std::size_t n, std::string_view what) const {
+    fail(std::string(what) + " needs " + std::to_string(n) + " bytes, only " +
+         std::to_string(left()) + " left in the chunk");
+  }
+  [[gnu::noinline]] std::uint64_t varintLong(std::string_view what) {
+    const std::uint64_t at = offset();
+    std::uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      if (p_ == end_) failAt(at, std::string(what) + ": varint cut by the end of the chunk");
+      const std::uint8_t byte = *p_++;
+      if (shift == 63 && byte > 1) failAt(at, std::string(what) + ": varint over 64 bits");
+      v |= std::uint64_t{byte & 0x7Fu} << shift;
+      if ((byte & 0x80) == 0) return v;
+    }
+    failAt(at, std::string(what) + ": varint over 64 bits");
+  }
   const std::uint8_t* p_ = nullptr;
   const std::uint8_t* begin_ = nullptr;
   const std::uint8_t* end_ = nullptr;
@@ -252,35 +267,32 @@ class In {
 
 class GroupIn {
  public:
-  GroupIn(In& in, std::string_view what) : in_(in), what_(what), codes_(in.u8(what)) {}
-  double get(double p0, double p1, double base = 0.0) {
-    const auto code =
-        static_cast<std::uint8_t>((static_cast<unsigned>(codes_) >> (2u * n_++)) & 3u);
-    const std::uint64_t at = in_.offset();
+  [[gnu::always_inline]] GroupIn(In& in, std::string_view what)
+      : in_(in), what_(what), codes_(in.u8(what)) {}
+  [[gnu::always_inline]] double get(double p0, double p1, double base = 0.0) {
+    const unsigned code = codes_ & 3u;
+    codes_ >>= 2;
     double v;
-    switch (code) {
-      case kP0:
-        v = p0;
-        break;
-      case kP1:
-        v = p1;
-        break;
-      case kF32:
-        v = base + static_cast<double>(std::bit_cast<float>(in_.u32(what_)));
-        break;
-      default:
-        return in_.f64(what_);
+    if (code == kP0) [[likely]] {
+      v = p0;
+    } else if (code == kP1) {
+      v = p1;
+    } else if (code == kF32) {
+      v = base + static_cast<double>(std::bit_cast<float>(in_.u32(what_)));
+    } else {
+      return in_.f64(what_);
     }
     // A prediction or a sum can overflow where the recorder's value could not have.
-    if (!std::isfinite(v)) in_.failAt(at, std::string(what_) + " is " + tv::formatNumber(v));
+    if (!std::isfinite(v)) [[unlikely]] {
+      in_.failValue(in_.offset() - (code == kF32 ? 4 : 0), what_, v);
+    }
     return v;
   }
 
  private:
   In& in_;
   std::string_view what_;
-  std::uint8_t codes_;
-  unsigned n_ = 0;
+  unsigned codes_;
 };
 
 }  // namespace tv::rec

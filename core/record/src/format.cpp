@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 namespace tv::rec {
 
@@ -568,20 +569,28 @@ void Encoder::advance(double frameTime, int ticks) {
 
 namespace {
 
-ItemId aliveAt(In& in, const Model& m, std::int64_t index, std::string_view what) {
+[[noreturn, gnu::cold, gnu::noinline]] void failAlive(In& in, const Model& m, std::int64_t index,
+                                                      std::string_view what) {
   if (index < 0 || static_cast<std::uint64_t>(index) >= m.slots.size()) {
     in.fail(std::string(what) + ": item index " + std::to_string(index) +
             " was never issued (the world has " + std::to_string(m.slots.size()) + " slots)");
   }
   const Model::Slot& s = m.slots[static_cast<std::size_t>(index)];
-  if (!s.alive) {
-    in.fail(std::string(what) + ": item " + std::to_string(index) + "." +
-            std::to_string(s.generation) + " is not in the world (removed or never added)");
-  }
-  return {static_cast<std::uint32_t>(index), s.generation};
+  in.fail(std::string(what) + ": item " + std::to_string(index) + "." +
+          std::to_string(s.generation) + " is not in the world (removed or never added)");
 }
 
-ItemId readItem(In& in, Model& m, std::uint8_t kindByte, std::string_view what) {
+[[gnu::always_inline]] inline ItemId aliveAt(In& in, const Model& m, std::int64_t index,
+                                             std::string_view what) {
+  if (index < 0 || static_cast<std::uint64_t>(index) >= m.slots.size() ||
+      !m.slots[static_cast<std::size_t>(index)].alive) [[unlikely]] {
+    failAlive(in, m, index, what);
+  }
+  return {static_cast<std::uint32_t>(index), m.slots[static_cast<std::size_t>(index)].generation};
+}
+
+[[gnu::always_inline]] inline ItemId readItem(In& in, Model& m, std::uint8_t kindByte,
+                                              std::string_view what) {
   std::int64_t index = m.prevItem;
   if (!(kindByte & kSameItem)) index += in.zigzag(what);
   const ItemId id = aliveAt(in, m, index, what);
@@ -601,20 +610,44 @@ void requireBudget(In& in, const Model& m, std::uint64_t extra, std::uint64_t ma
 // A replayed call costs time in proportion to the cells it visits: refuse, as hostile, a call
 // that would visit more cells than the budget allows (a move of 10^15 px, a query over the
 // whole plane), instead of replaying it for hours.
-void requireReach(In& in, const Model& m, std::uint64_t at, const Rect& r, Vec2 goal,
-                  bool wholeHull, std::uint64_t maxCells, std::string_view what) {
+[[noreturn, gnu::cold, gnu::noinline]] void failReach(In& in, std::uint64_t at, double cells,
+                                                      std::uint64_t maxCells,
+                                                      std::string_view what) {
+  in.failAt(at, std::string(what) + " would visit about " + formatNumber(std::floor(cells)) +
+                    " cells, more than the replay's budget of " + std::to_string(maxCells) +
+                    " (ReplayOptions::maxCells)");
+}
+
+// `what`: a name, or the CallKind whose name it is (looked up only for the message).
+template <class What>
+[[gnu::always_inline]] inline void requireReach(In& in, const Model& m, std::uint64_t at,
+                                                const Rect& r, Vec2 goal, bool wholeHull,
+                                                std::uint64_t maxCells, What what) {
   const double c = m.cellSize;
+  const double budget = static_cast<double>(maxCells);
+  // Most moves span a few cells: an estimate by the reciprocal (no division) clears them; one
+  // near the budget is decided exactly as always.
+  {
+    const double k = 1.0 / c;
+    const double dx = std::fabs(goal.x - r.x) * k, dy = std::fabs(goal.y - r.y) * k;
+    const double w = r.w * k + 2, h = r.h * k + 2;
+    const double cells = wholeHull ? (dx + w) * (dy + h) : (dx + dy + 1) * std::max(w, h);
+    if (cells <= budget * 0.5) [[likely]]
+      return;
+  }
   const double dx = std::fabs(goal.x - r.x) / c, dy = std::fabs(goal.y - r.y) / c;
   const double w = r.w / c + 2, h = r.h / c + 2;
   const double cells = wholeHull ? (dx + w) * (dy + h) : (dx + dy + 1) * std::max(w, h);
-  if (!(cells <= static_cast<double>(maxCells))) {
-    in.failAt(at, std::string(what) + " would visit about " + formatNumber(std::floor(cells)) +
-                      " cells, more than the replay's budget of " + std::to_string(maxCells) +
-                      " (ReplayOptions::maxCells)");
+  if (!(cells <= budget)) {
+    if constexpr (std::is_same_v<What, CallKind>) {
+      failReach(in, at, cells, maxCells, callKindName(what));
+    } else {
+      failReach(in, at, cells, maxCells, what);
+    }
   }
 }
 
-Vec2 readGoal(In& in, const Model::Slot& s, std::string_view what) {
+[[gnu::always_inline]] inline Vec2 readGoal(In& in, const Model::Slot& s, std::string_view what) {
   GroupIn g(in, what);
   const double x = g.get(s.rect.x + s.lastDelta.x, s.rect.x, s.rect.x);
   const double y = g.get(s.rect.y + s.lastDelta.y, s.rect.y, s.rect.y);
@@ -883,6 +916,13 @@ void decodeKeyframe(In& in, Model& m, WorldState& s, std::uint64_t maxCells) {
   m.reset(s);
 }
 
+namespace {
+[[noreturn, gnu::cold, gnu::noinline]] void failFlags(In& in, const Call& c, std::uint8_t flags) {
+  in.failAt(c.offset, "call kind " + std::string(callKindName(c.kind)) + " with undefined flags " +
+                          std::to_string(flags));
+}
+}  // namespace
+
 void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.offset = in.offset();
   c.collisions.clear();
@@ -903,11 +943,9 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   }
   c.kind = static_cast<CallKind>(kindBits);
   const std::uint8_t flags = kb & 0xF0;
-  auto onlyFlags = [&](std::uint8_t allowed) {
-    if (flags & ~allowed) {
-      in.failAt(c.offset, "call kind " + std::string(callKindName(c.kind)) +
-                              " with undefined flags " + std::to_string(flags));
-    }
+  const auto onlyFlags = [&](std::uint8_t allowed) {
+    if (flags & ~allowed) [[unlikely]]
+      failFlags(in, c, flags);
   };
   switch (c.kind) {
     case CallKind::add: {
@@ -1010,7 +1048,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       c.goal = readGoal(in, s, "goal");
       const bool hull =
           c.broad == BroadPhase::bounds || (mover && m.movers[c.mover].kind == MoverKind::sweep);
-      requireReach(in, m, c.offset, s.rect, c.goal, hull, maxCells, callKindName(c.kind));
+      requireReach(in, m, c.offset, s.rect, c.goal, hull, maxCells, c.kind);
       const Vec2 d = c.goal - s.rect.position();
       if (sameBits(s.rect.x + d.x, c.goal.x) && sameBits(s.rect.y + d.y, c.goal.y)) s.lastDelta = d;
       if (kb & kFree) {
