@@ -64,8 +64,9 @@ inline constexpr std::size_t round8(std::size_t n) {
   return (n + 7) & ~std::size_t{7};
 }
 
-// Frame flags.
-enum : std::uint8_t { kKeyframeNow = 1, kLiveStart = 2 };
+// Frame flags. kNoLiveStart: the frame begins as a live-only recorder stops copying calls
+// (nobody listens): its chunk will lack them, so no live run may begin with it.
+enum : std::uint8_t { kKeyframeNow = 1, kLiveStart = 2, kNoLiveStart = 4 };
 
 struct StateRec {
   WorldState* state;  // owned by the record: the writer deletes it (null: no keyframe)

@@ -16,9 +16,9 @@ class LiveOut {
  public:
   virtual ~LiveOut() = default;
   virtual void header(const std::array<std::uint8_t, kHeaderSize>& header) = 0;
-  // Frame `frame` begins with a keyframe whose bytes end at `callsAt` in its payload; `start`:
-  // the keyframe a receiver that just connected asked for.
-  virtual void keyframe(std::uint64_t frame, std::size_t callsAt, bool start) = 0;
+  // Frame `frame` begins with a keyframe whose bytes end at `callsAt` in its payload.
+  // `mayStart`: a live run may begin with it (false when the game stops copying calls).
+  virtual void keyframe(std::uint64_t frame, std::size_t callsAt, bool mayStart) = 0;
   // Frame `frame`'s chunk: its 8-byte head (length, CRC) and payload.
   virtual void chunk(std::uint64_t frame, const std::uint8_t (&head)[8],
                      std::span<const std::uint8_t> payload, const Model& model) = 0;

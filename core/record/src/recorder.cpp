@@ -14,6 +14,7 @@
 #include "capture.hpp"
 #include "crash_flush.hpp"
 #include "format.hpp"
+#include "live_sink.hpp"
 #include "tv/batch.hpp"
 #include "tv/mover.hpp"
 #include "tv/world.hpp"
@@ -62,13 +63,16 @@ struct Recorder::Impl {
   std::vector<rec::BodyRec> bodies;   // batch scratch
   std::vector<Collision> batchCollisions;
 
+  std::unique_ptr<rec::LiveSink> live;  // the writer and the pipe's thread use it: last to go
+  bool liveOnly = false;                // no file, no memory: copy calls only while streaming
+  bool capturing = true;                // false while a live-only recorder has no receiver
   std::unique_ptr<rec::Writer> writer;
   std::unique_ptr<rec::Pipe> pipe;  // declared last: stopped (its thread joined) first
   rec::CrashWatch crash;
   bool watched = false;
 
   void open(std::FILE* file, const std::string& path, std::vector<std::uint8_t>* memory) {
-    writer = std::make_unique<rec::Writer>(options.keyframeEvery, file, path, memory, nullptr);
+    writer = std::make_unique<rec::Writer>(options.keyframeEvery, file, path, memory, live.get());
     pipe = std::make_unique<rec::Pipe>([w = writer.get()](const rec::Block& b) { w->consume(b); },
                                        options.background, options.maxQueueBytes);
     if (file && options.flushOnCrash) {
@@ -178,6 +182,31 @@ Recorder::Recorder(RecorderOptions options) : impl_(std::make_unique<Impl>()) {
   impl_->open(nullptr, {}, &memory_);
 }
 
+Recorder::Recorder(const LiveOptions& live, RecorderOptions options)
+    : impl_(std::make_unique<Impl>()) {
+  checkOptions(options);
+  impl_->options = options;
+  impl_->live = std::make_unique<rec::LiveSink>(live);
+  impl_->liveOnly = true;
+  impl_->capturing = false;
+  impl_->open(nullptr, {}, nullptr);
+}
+
+void Recorder::stream(const LiveOptions& live) {
+  Impl& d = *impl_;
+  if (d.started || d.stopped) {
+    fail("tv::Recorder::stream", "call it before the recorder attaches to a world");
+  }
+  if (d.live) fail("tv::Recorder::stream", "this recorder streams already");
+  d.live = std::make_unique<rec::LiveSink>(live);
+  d.writer->setLive(d.live.get());
+}
+
+LiveStatus Recorder::liveStatus() const {
+  const Impl& d = *impl_;
+  return d.live ? d.live->status() : LiveStatus{};
+}
+
 Recorder::~Recorder() {
   try {
     close();
@@ -195,9 +224,14 @@ void Recorder::attached(const World& world) {
   }
   d.world = const_cast<World*>(&world);  // attach() took the world non-const
   d.started = true;
+  std::uint8_t flags = rec::kKeyframeNow;
+  if (d.live) {
+    (void)d.live->takeKeyframeRequest();  // frame 0 is a keyframe anyway
+    if (d.liveOnly) d.capturing = d.live->connected();
+    if (!d.capturing) flags |= rec::kNoLiveStart;  // nobody listens: frame 0 will lack calls
+  }
   // Frame 0 opens with the world as it is.
-  d.put(rec::Tag::start, rec::kKeyframeNow,
-        rec::StateRec{new WorldState(world.state()), world.cellSize()});
+  d.put(rec::Tag::start, flags, rec::StateRec{new WorldState(world.state()), world.cellSize()});
   for (const Impl::PendingLabel& l : d.pending) d.text(rec::Tag::label, l.id, l.label, l.category);
   d.pending.clear();
 }
@@ -251,6 +285,7 @@ void Recorder::close() {
   }
   d.stopped = true;
   d.pipe->stop();
+  if (d.live) d.live->stop();  // after the writer: the last frame and the end mark go out
   if (d.watched) {
     rec::unwatch(&d.crash);
     d.watched = false;
@@ -300,19 +335,42 @@ void Recorder::frame() {
   Impl& d = *impl_;
   if (!d.started || d.stopped || d.writerFailed()) return;
   ++d.frame;
-  const bool key = d.frame % d.options.keyframeEvery == 0;
-  d.put(rec::Tag::frame, key ? rec::kKeyframeNow : 0,
+  bool key = d.frame % d.options.keyframeEvery == 0;
+  std::uint8_t flags = 0;
+  if (d.live) {
+    if (d.live->takeKeyframeRequest()) {
+      key = true;  // a receiver joined (its run begins here) or asked for one
+      flags = rec::kLiveStart;
+    }
+    if (d.liveOnly) {
+      if (!d.live->connected()) {
+        // Nobody listens: nothing is copied until someone does. The frame that begins now
+        // will lack its calls, so it ends the copying without a keyframe to start a run with.
+        if (d.capturing) {
+          d.put(rec::Tag::frame, rec::kNoLiveStart, rec::StateRec{nullptr, 0.0});
+          d.pipe->handOver();
+          d.capturing = false;
+        }
+        return;
+      }
+      if (!d.capturing) key = true;  // the first frame copied since: a keyframe
+      d.capturing = true;
+    }
+  }
+  if (key) flags |= rec::kKeyframeNow;
+  d.put(rec::Tag::frame, flags,
         rec::StateRec{key && d.world ? new WorldState(d.world->state()) : nullptr, 0.0});
   ++frames_;
   d.crash.handed.fetch_add(1, std::memory_order_release);
   d.pipe->handOver();
+  if (d.live) d.live->waitWhilePaused();  // a receiver that holds the game holds it here
 }
 
 // [SECTION] observer reports ----------------------------------------------------------------------
 
-#define TV_RECORDING()                 \
-  Impl& d = *impl_;                    \
-  if (!d.started || d.stopped) return; \
+#define TV_RECORDING()                                 \
+  Impl& d = *impl_;                                    \
+  if (!d.started || d.stopped || !d.capturing) return; \
   ++calls_
 
 void Recorder::added(ItemId id, const Rect& r) {
@@ -420,19 +478,20 @@ void Recorder::advanced(double frameTime, int ticks) {
   Impl& d = *impl_;
   if (!d.started || d.stopped) return;
   frame();
-  if (d.stopped) return;
+  if (d.stopped || !d.capturing) return;
   d.put(rec::Tag::advance, 0, rec::AdvanceRec{frameTime, ticks});
 }
 
 void Recorder::filtered(ItemId item, ItemId other, ResponseId answer) {
   Impl& d = *impl_;
-  if (d.stopped) return;
+  if (d.stopped || !d.capturing) return;
   d.answers.push_back({item, other, answer});
 }
 
 void Recorder::responded(const Collision&, Vec2, const Leg& leg) {
   Impl& d = *impl_;
-  if (d.stopped || !busy()) return;  // a direct World::respond is not part of a call
+  // A direct World::respond is not part of a call.
+  if (d.stopped || !d.capturing || !busy()) return;
   d.legs.push_back(leg);
 }
 

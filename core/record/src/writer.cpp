@@ -63,7 +63,7 @@ void Writer::beginFrame(std::uint8_t flags, WorldState* state) {
   if (state) {
     enc_.keyframe(*state);
     defined_.assign(specs_.size(), false);
-    if (live_) live_->keyframe(frame_, o.size(), (flags & kLiveStart) != 0);
+    if (live_) live_->keyframe(frame_, o.size(), (flags & kNoLiveStart) == 0);
   }
 }
 

@@ -30,6 +30,8 @@ class Writer {
 
   // Writer's thread (or the game's, unthreaded).
   void consume(const Block& block);
+  // Before the first record is handed over (the pipe's lock orders it before the writer reads).
+  void setLive(LiveOut* live) { live_ = live; }
 
   // -- read by the game's thread ------------------------------------------------------------
   [[nodiscard]] bool failed() const { return failed_.load(std::memory_order_acquire); }

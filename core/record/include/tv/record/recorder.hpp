@@ -31,6 +31,7 @@
 
 #include "tv/error.hpp"  // what they throw
 #include "tv/observer.hpp"
+#include "tv/record/live.hpp"
 #include "tv/timestep.hpp"
 
 namespace tv {
@@ -62,14 +63,23 @@ class Recorder final : public WorldObserver {
   explicit Recorder(const std::string& path, RecorderOptions options = {});
   /// Records into memory (tests, benchmarks): `bytes()` is then the whole file.
   explicit Recorder(RecorderOptions options = {});
+  /// Streams to a receiver only (tv/record/live.hpp), keeping nothing: while nobody listens it
+  /// copies no call at all. Throws tv::Error when `live` is malformed (names the address).
+  explicit Recorder(const LiveOptions& live, RecorderOptions options = {});
   /// Detaches from its world and FixedStep if still attached, ends the frame, closes the file.
   ~Recorder() override;
   Recorder(const Recorder&) = delete;
   Recorder& operator=(const Recorder&) = delete;
 
   /// Ends the current frame (writes and flushes its chunk) and begins the next. An attached
-  /// FixedStep does this at every advance.
+  /// FixedStep does this at every advance. With a live stream whose receiver paused the game
+  /// (LiveOptions::control), it waits here until the receiver steps or resumes it.
   void frame();
+  /// Also streams the recording to a receiver (tv/record/live.hpp). Call it before the world
+  /// attaches. Throws tv::Error when `live` is malformed or the recorder streams already.
+  void stream(const LiveOptions& live);
+  /// Where the live stream stands (all false and 0 without one).
+  [[nodiscard]] LiveStatus liveStatus() const;
   /// `step.attach(this)`, remembered so that the destructor and close() detach it again (a
   /// FixedStep attached by hand must be detached by hand before the recorder dies).
   void attach(FixedStep& step);
