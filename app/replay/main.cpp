@@ -6,6 +6,8 @@
 //   tv-replay FILE --stats              per item: moves, hits, max speed, moves ending in a solid
 //   tv-replay FILE --mover NAME [--substep L] [--updates-as-moves] [--far D]
 //                                       re-run the moves with another mover and compare
+//   tv-replay --listen [HOST:]PORT --out FILE [--frames N] [--wait S]
+//                                       receive a game's live stream into FILE (listen.cpp)
 
 #include <algorithm>
 #include <chrono>
@@ -15,8 +17,9 @@
 #include <string>
 #include <string_view>
 
-#include "tv/app/user_message.hpp"
+#include "listen.hpp"
 #include "tv/app/flags.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
 #include "tv/record/replay.hpp"
 
@@ -32,11 +35,13 @@ struct Options {
   std::optional<std::string> mover;
   std::optional<double> substep;
   double far = 64.0;
+  std::optional<tv::replay::ListenOptions> listen;
 };
 
 constexpr const char* kUsage =
     "usage: tv-replay FILE [--validate | --stats | --mover NAME [--substep L] [--updates-as-moves] "
     "[--far D]] [--tolerant]\n"
+    "       tv-replay --listen [HOST:]PORT --out FILE [--frames N] [--wait S]\n"
     "  (no flag)           summary: frames, calls, moves, collisions, items, size, bytes per move, "
     "replay rate\n"
     "  --validate          replay every call and compare it with the recording; exit 1 on a "
@@ -51,7 +56,12 @@ constexpr const char* kUsage =
     "bodies themselves)\n"
     "  --far D             what-if: distance from the recording beyond which its goals stop making "
     "sense (default 64)\n"
-    "  --tolerant          open what can be opened of a damaged file (a bad chunk ends it)\n";
+    "  --tolerant          open what can be opened of a damaged file (a bad chunk ends it)\n"
+    "  --listen [HOST:]PORT  receive one game's live stream (a game run with --live, or TV_LIVE)\n"
+    "                      on 127.0.0.1 unless HOST is given; port 0 takes a free one\n"
+    "  --out FILE          with --listen: where the stream is saved, whole frames as they come\n"
+    "  --frames N          with --listen: stop after N frames (default: when the game leaves)\n"
+    "  --wait S            with --listen: give up if no game connects within S seconds\n";
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -77,6 +87,20 @@ Options parse(int argc, char** argv) {
     } else if (a == "--substep") {
       o.substep = tv::app::parseFinite<UsageError>("substep", value());
       if (*o.substep <= 0) throw UsageError{"--substep: expected a length > 0"};
+    } else if (a == "--listen") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->address = std::string(value());
+    } else if (a == "--out") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->out = std::string(value());
+    } else if (a == "--frames") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->frames = tv::app::parseWhole<UsageError>("frames", value());
+      if (o.listen->frames == 0) throw UsageError{"--frames: expected at least 1"};
+    } else if (a == "--wait") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->waitSeconds = tv::app::parseFinite<UsageError>("wait", value());
+      if (o.listen->waitSeconds <= 0) throw UsageError{"--wait: expected seconds > 0"};
     } else if (a == "--far") {
       o.far = tv::app::parseFinite<UsageError>("far", value());
       if (o.far < 0) throw UsageError{"--far: expected a distance >= 0"};
@@ -88,6 +112,14 @@ Options parse(int argc, char** argv) {
       throw UsageError{"one recording at a time (got '" + o.file + "' and '" + std::string(a) +
                        "')"};
     }
+  }
+  if (o.listen) {
+    if (o.listen->address.empty()) throw UsageError{"--out, --frames and --wait go with --listen"};
+    if (o.listen->out.empty()) throw UsageError{"--listen needs --out FILE (where to save it)"};
+    if (!o.file.empty() || o.validate || o.stats || o.mover || o.tolerant) {
+      throw UsageError{"--listen receives a recording: validate it afterwards with tv-replay FILE"};
+    }
+    return o;
   }
   if (o.file.empty()) throw UsageError{"no recording given"};
   if ((o.validate + o.stats + o.mover.has_value()) > 1) {
@@ -166,8 +198,7 @@ int stats(tv::Replay& r) {
     }
     std::printf("| %s | %s | %llu | %llu | %.3f | %llu |\n", it.label.c_str(), it.category.c_str(),
                 static_cast<unsigned long long>(it.moves), static_cast<unsigned long long>(it.hits),
-                it.maxSpeed,
-                static_cast<unsigned long long>(it.endedOverlapping));
+                it.maxSpeed, static_cast<unsigned long long>(it.endedOverlapping));
   }
   std::printf("\n%zu items never moved (tiles, walls...).\n", still);
   return 0;
@@ -237,6 +268,7 @@ int main(int argc, char** argv) {
     std::cerr << "tv-replay: " << e.message << "\n" << kUsage;
     return 2;
   }
+  if (o.listen) return tv::replay::listen(*o.listen);
   try {
     tv::ReplayOptions ro;
     ro.tolerant = o.tolerant;
@@ -246,8 +278,7 @@ int main(int argc, char** argv) {
       tv::MoverSpec spec = tv::parseMover(*o.mover);
       if (o.substep) {
         if (spec.kind != tv::MoverKind::substep) {
-          throw tv::Error("--substep applies to the substep-* movers, not '" + *o.mover +
-                          "'");
+          throw tv::Error("--substep applies to the substep-* movers, not '" + *o.mover + "'");
         }
         spec.maxStep = *o.substep;
       }
