@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "bump_crowd.hpp"
-#include "platformer_game.hpp"
 #include "report.hpp"
 #include "studies.hpp"
+#include "tv/app/platformer_game.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/live.hpp"
 #include "tv/record/recorder.hpp"

@@ -26,8 +26,8 @@
 #include <thread>
 #include <vector>
 
-#include "platformer_game.hpp"
 #include "tv/app/flags.hpp"
+#include "tv/app/platformer_game.hpp"
 #include "tv/app/user_message.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/live.hpp"
