@@ -4,7 +4,7 @@
 set -euo pipefail
 
 core=(g++ cmake ninja-build pkg-config googletest libgtest-dev libgmock-dev libgmp-dev libbenchmark-dev
-      nlohmann-json3-dev zlib1g-dev liblua5.1-0-dev lua5.1 luajit lua-busted)
+      nlohmann-json3-dev zlib1g-dev liblua5.1-0-dev lua5.1 luajit lua-busted doxygen)
 gui=(libimgui-dev libglfw3-dev libosmesa6-dev libstb-dev libgl-dev xvfb xauth
      love libegl1 libgl1-mesa-dri)  # love headless: SDL's offscreen driver (EGL, llvmpipe)
 
