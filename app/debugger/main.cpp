@@ -35,8 +35,8 @@ void printList() {
     std::printf("  %-16s %-11s %s\n", s.name.c_str(), s.category.c_str(), s.description.c_str());
   }
   std::cout << "movers:\n";
-  for (const std::string_view m : moverNames()) {
-    std::printf("  %-16s %s\n", std::string(m).c_str(), std::string(moverDescription(m)).c_str());
+  for (const MoverEntry& m : moverTable()) {
+    std::printf("  %-16s %s\n", std::string(m.name).c_str(), std::string(m.description).c_str());
   }
 }
 
@@ -125,7 +125,8 @@ int interactive(const ViewerOptions& o) {
     // The first run opens on the moment that matters: the tick the naive bullet passes the
     // wall, followed, beside the substep patch and the exact sweep.
     p.scene = "bullets-wall";
-    p.movers = {"discrete", "substep-discrete", "continuous"};
+    p.movers = {MoverSpec{.kind = MoverKind::discrete}, MoverSpec{.kind = MoverKind::substep},
+                MoverSpec{.kind = MoverKind::continuous}};
     p.compare = true;
     p.ticks = {2};
     p.body = 2;
@@ -140,8 +141,7 @@ int interactive(const ViewerOptions& o) {
     RecordingDebugger& r = debugger.openRecording(o.recording->path);
     std::uint64_t frame = o.recording->frame;
     std::optional<std::uint32_t> call = o.recording->call;
-    std::optional<MoverSpec> whatIf;
-    if (o.recording->whatIf) whatIf = ui::whatIfMover(*o.recording->whatIf);
+    const std::optional<MoverSpec>& whatIf = o.recording->whatIf;
     if (whatIf && o.recording->firstFailure) {
       // The moment to open at needs the whole re-run: run it once here, before the window.
       const WhatIfReport report =

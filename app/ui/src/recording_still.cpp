@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "tv/app/flags.hpp"
+#include "tv/app/movers.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/still.hpp"
 
@@ -49,7 +50,7 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
       r.call = static_cast<std::uint32_t>(k);
       picked = placed = "--call";
     } else if (arg == "--what-if") {
-      r.whatIf = std::string(value(i, arg));
+      r.whatIf = app::parseMoverFlag<UsageError>("what-if", value(i, arg));
       picked = "--what-if";
     } else if (arg == "--updates-as-moves") {
       r.updatesAsMoves = true;
@@ -102,14 +103,6 @@ RecordingSession openRecording(const std::string& path) {
                           std::filesystem::path(path).filename().string());
 }
 
-MoverSpec whatIfMover(const std::string& name) {
-  try {
-    return parseMover(name);
-  } catch (const Error& e) {
-    throw UsageError{"--what-if: " + std::string(e.what())};
-  }
-}
-
 Overlays recordingOverlays(const PictureOptions& o) {
   Overlays on = overlaysFor(o);
   // A recording has no render rate: physics, render and pixel positions coincide, so the
@@ -139,7 +132,7 @@ RecordingStill::RecordingStill(const RecordingFlags& r, const PictureOptions& o)
   if (r.whatIf) {
     // The whole re-run first: its report is part of the picture, and --first-failure needs it.
     whatIf_ = std::make_unique<WhatIf>();
-    whatIf_->mover = whatIfMover(*r.whatIf);
+    whatIf_->mover = *r.whatIf;
     whatIf_->report = runWhatIf(r.path, whatIf_->mover, r.updatesAsMoves);
     ReplayOptions ro;
     ro.mover = whatIf_->mover;

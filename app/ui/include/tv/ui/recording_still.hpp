@@ -25,7 +25,7 @@ struct RecordingFlags {
   std::uint64_t frame = 0;            ///< --frame N
   std::optional<std::string> item;    ///< --item LABEL: the item traced
   std::optional<std::uint32_t> call;  ///< --call K: the call of the frame selected
-  std::optional<std::string> whatIf;  ///< --what-if MOVER: re-run beside the recorded run
+  std::optional<MoverSpec> whatIf;    ///< --what-if MOVER: re-run beside the recorded run
   bool updatesAsMoves = false;        ///< --updates-as-moves: for the what-if run
   /// --first-failure: with --what-if, the frame and call of the first re-run move that
   /// tunnelled or ended inside a solid (instead of --frame and --call).
@@ -52,8 +52,6 @@ void rejectSceneFlags(const PictureOptions& o);
 /// Opens `path` for the debugger (the view is at frame 0); tv::Error naming the file and what
 /// is wrong with it.
 [[nodiscard]] RecordingSession openRecording(const std::string& path);
-/// The mover named by --what-if; UsageError naming the flag for an unknown one.
-[[nodiscard]] MoverSpec whatIfMover(const std::string& name);
 
 class RecordingStill {
  public:
