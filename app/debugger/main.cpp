@@ -141,7 +141,7 @@ int interactive(const ViewerOptions& o) {
     RecordingDebugger& r = debugger.openRecording(o.recording->path);
     std::uint64_t frame = o.recording->frame;
     std::optional<std::uint32_t> call = o.recording->call;
-    const std::optional<MoverSpec> whatIf = o.recording->whatIf;
+    const std::optional<MoverSpec>& whatIf = o.recording->whatIf;
     if (whatIf && o.recording->firstFailure) {
       // The moment to open at needs the whole re-run: run it once here, before the window.
       const WhatIfReport report =
