@@ -11,6 +11,8 @@
 #include "tv/error.hpp"
 #include "tv/world.hpp"
 
+#include "spatial_hash.hpp"
+
 namespace tv {
 
 namespace {
@@ -32,21 +34,30 @@ bool World::bumpFirstHit(ItemId self, const Rect& at, Vec2 goal, Filter filter, 
                          Collision& out) const {
   const bump::Cells cells = bump::cellsOfLeg(grid_.cellSize(), at, goal);
   const double size = grid_.cellSize();
-  queryRect({(cells.left - 1) * size, (cells.top - 1) * size, (cells.right - cells.left + 1) * size,
-             (cells.bottom - cells.top + 1) * size},
-            bumpFound_);
-  if (trace) {
-    for (double cy = cells.top; cy <= cells.bottom; ++cy)
-      for (double cx = cells.left; cx <= cells.right; ++cx)
-        trace->cells.push_back({static_cast<std::int64_t>(cx) - 1, static_cast<std::int64_t>(cy) - 1});
-  }
+  // bump's cell (cx, cy), 1-based, covers the core's cell (cx - 1, cy - 1). An item in one of
+  // bump's cells of the leg has an interior that meets their area, so the spatial hash holds it
+  // in one of the core's cells there; bump's own cell test then keeps exactly bump's candidates.
+  const CellRange range{static_cast<std::int64_t>(cells.left) - 1,
+                        static_cast<std::int64_t>(cells.top) - 1,
+                        static_cast<std::int64_t>(cells.right) - 1,
+                        static_cast<std::int64_t>(cells.bottom) - 1};
+  if (trace) Grid::forEachCell(range, [&](Cell c) { trace->cells.push_back(c); });
+  bumpFound_.clear();
+  const std::uint32_t epoch = nextEpoch();
+  if (self.valid()) stamp_[self.index] = epoch;
+  for (const ItemId m : bumpMet_) stamp_[m.index] = epoch;  // met: left out, as bump's visited
+  const detail::SpatialHash& hash = *hash_;
+  Grid::forEachCell(hash.live(range), [&](Cell c) {
+    for (const detail::HashEntry& e : hash.items(c)) {
+      if (stamp_[e.slot()] == epoch) continue;
+      if (e.shared()) stamp_[e.slot()] = epoch;  // in several cells: once
+      if (!bump::cellsOf(size, e.rect).meets(cells)) continue;  // not in bump's cells of the leg
+      bumpFound_.push_back({e.slot(), e.generation});
+    }
+  });
   bumpHits_.clear();
   for (const ItemId other : bumpFound_) {
-    if (other == self || std::find(bumpMet_.begin(), bumpMet_.end(), other) != bumpMet_.end()) {
-      continue;
-    }
     const Rect o = slots_[other.index].rect;
-    if (!bump::cellsOf(size, o).meets(cells)) continue;  // not in bump's cells of the leg
     if (trace) trace->candidates.push_back(other);
     const Sweep s = bump::detect(at, goal, o);
     if (s.kind == SweepKind::miss) continue;
