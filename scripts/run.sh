@@ -22,9 +22,9 @@ if [ $headless = 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]
       mkdir -p out/recordings
       "$build/app/examples/tv-example-platformer" --frames 600 \
         --record out/recordings/platformer.tvrec >&2
-      exec "$build/app/viewer/tv-debugger" out/recordings/platformer.tvrec
+      exec "$build/app/debugger/tv-debugger" out/recordings/platformer.tvrec
     fi
-    exec "$build/app/viewer/tv-debugger" "$@"
+    exec "$build/app/debugger/tv-debugger" "$@"
   fi
   echo "run.sh: the debugger did not build (above); rendering the comparison images instead" >&2
 fi
@@ -41,7 +41,7 @@ while IFS='|' read -r name args; do
   caption="${args#* --caption }"
   flags="${args%% --caption *}"
   # shellcheck disable=SC2086  # the flags are words by design
-  "$build/app/headless/tv-render" $flags --caption "$caption" --out "$out/$name.png" >/dev/null
+  "$build/app/render/tv-render" $flags --caption "$caption" --out "$out/$name.png" >/dev/null
   echo "  $out/$name.png"
 done <<'LIST' > "$out/index.txt"
 tunnel-1920|--scene bullets-wall --compare discrete,substep-discrete,continuous --tick 2 --body 2 --view follow --caption Tunnelling at 1920 px/s: 1000 bullets into a one-tile wall. The naive mover teleports past it, the substep patch and the exact sweep stop at its face.
@@ -66,4 +66,4 @@ fi
 if [ $bench = 1 ]; then
   exec "$build/app/bench/tv-bench" tunnel --out out/bench
 fi
-exec "$build/app/cli/tv-run"
+exec "$build/app/run/tv-run"

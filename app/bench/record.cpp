@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "platformer_game.hpp"
+#include "tv/app/platformer_game.hpp"
 #include "report.hpp"
 #include "studies.hpp"
 #include "tv/mover.hpp"

@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "platformer_game.hpp"
+#include "tv/app/platformer_game.hpp"
 #include "tv/app/user_message.hpp"
 #include "tv/app/flags.hpp"
 #include "tv/mover.hpp"

@@ -14,18 +14,30 @@ namespace tv {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kNames = {
-    "discrete", "sweep", "substep-discrete", "substep-sweep", "continuous", "pixel", "adaptive"};
-
-constexpr std::array<std::string_view, 7> kDescriptions = {
-    "teleport to the goal, push out of overlaps: the naive mover, tunnels at speed",
-    "one swept move over the move's bounding box (bump.lua's world:move)",
-    "pieces of at most maxStep (tile/2), each teleported and pushed out: the usual patch",
-    "pieces of at most maxStep (tile/2), each swept: the patch over bump.lua",
-    "one exact sweep visiting only the cells the rect crosses: never tunnels, zero error",
-    "one pixel at a time with a sub-pixel remainder (Celeste style): cost grows with speed",
-    "continuous, but a body pressed onto a floor or wall slides from one read of its move's box",
+// The mover table: every mover once, with its spec and its line of description. Names, parsing
+// and descriptions are all read from here.
+constexpr MoverEntry kTable[] = {
+    {"discrete", {.kind = MoverKind::discrete},
+     "teleport to the goal, push out of overlaps: the naive mover, tunnels at speed"},
+    {"sweep", {.kind = MoverKind::sweep},
+     "one swept move over the move's bounding box (bump.lua's world:move)"},
+    {"substep-discrete", {.kind = MoverKind::substep, .inner = MoverKind::discrete},
+     "pieces of at most maxStep (tile/2), each teleported and pushed out: the usual patch"},
+    {"substep-sweep", {.kind = MoverKind::substep, .inner = MoverKind::sweep},
+     "pieces of at most maxStep (tile/2), each swept: the patch over bump.lua"},
+    {"continuous", {.kind = MoverKind::continuous},
+     "one exact sweep visiting only the cells the rect crosses: never tunnels, zero error"},
+    {"pixel", {.kind = MoverKind::pixel},
+     "one pixel at a time with a sub-pixel remainder (Celeste style): cost grows with speed"},
+    {"adaptive", {.kind = MoverKind::adaptive},
+     "continuous, but a body pressed onto a floor or wall slides from one read of its move's box"},
 };
+
+constexpr auto kNames = [] {
+  std::array<std::string_view, std::size(kTable)> names{};
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] = kTable[i].name;
+  return names;
+}();
 
 constexpr std::string_view kWhere = "tv::Mover";
 
@@ -41,47 +53,26 @@ constexpr double kMaxPixels = 1 << 24;
 }  // namespace
 
 std::string MoverSpec::name() const {
-  switch (kind) {
-    case MoverKind::discrete:
-      return "discrete";
-    case MoverKind::sweep:
-      return "sweep";
-    case MoverKind::substep:
-      return inner == MoverKind::sweep ? "substep-sweep" : "substep-discrete";
-    case MoverKind::continuous:
-      return "continuous";
-    case MoverKind::pixel:
-      return "pixel";
-    case MoverKind::adaptive:
-      return "adaptive";
+  for (const MoverEntry& e : kTable) {
+    if (e.spec.kind == kind && (kind != MoverKind::substep || e.spec.inner == inner))
+      return std::string(e.name);
   }
   return "?";
 }
 
+std::span<const MoverEntry> moverTable() {
+  return kTable;
+}
+
 MoverSpec parseMover(std::string_view name) {
-  MoverSpec s;
-  if (name == "discrete") {
-    s.kind = MoverKind::discrete;
-  } else if (name == "sweep") {
-    s.kind = MoverKind::sweep;
-  } else if (name == "substep-discrete" || name == "substep") {
-    s.kind = MoverKind::substep;
-    s.inner = MoverKind::discrete;
-  } else if (name == "substep-sweep") {
-    s.kind = MoverKind::substep;
-    s.inner = MoverKind::sweep;
-  } else if (name == "continuous") {
-    s.kind = MoverKind::continuous;
-  } else if (name == "pixel") {
-    s.kind = MoverKind::pixel;
-  } else if (name == "adaptive") {
-    s.kind = MoverKind::adaptive;
-  } else {
-    std::string list;
-    for (const auto n : kNames) list += (list.empty() ? "" : ", ") + std::string(n);
-    fail("tv::parseMover", "unknown mover '" + std::string(name) + "' (known: " + list + ")");
+  // "substep" alone is the usual patch, substep-discrete (its older name).
+  if (name == "substep") name = "substep-discrete";
+  for (const MoverEntry& e : kTable) {
+    if (e.name == name) return e.spec;
   }
-  return s;
+  std::string list;
+  for (const auto n : kNames) list += (list.empty() ? "" : ", ") + std::string(n);
+  fail("tv::parseMover", "unknown mover '" + std::string(name) + "' (known: " + list + ")");
 }
 
 std::span<const std::string_view> moverNames() {
@@ -89,8 +80,8 @@ std::span<const std::string_view> moverNames() {
 }
 
 std::string_view moverDescription(std::string_view name) {
-  for (std::size_t i = 0; i < kNames.size(); ++i) {
-    if (kNames[i] == name) return kDescriptions[i];
+  for (const MoverEntry& e : kTable) {
+    if (e.name == name) return e.description;
   }
   (void)parseMover(name);  // throws with the list of names
   return {};

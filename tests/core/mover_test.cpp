@@ -187,6 +187,20 @@ TEST(Movers, NamesRoundTripAndUnknownNamesListTheKnownOnes) {
   }
 }
 
+TEST(Movers, TheTableIsTheOneListOfNamesSpecsAndDescriptions) {
+  ASSERT_EQ(moverTable().size(), moverNames().size());
+  for (std::size_t i = 0; i < moverTable().size(); ++i) {
+    const MoverEntry& e = moverTable()[i];
+    EXPECT_EQ(e.name, moverNames()[i]);
+    EXPECT_EQ(e.spec.name(), e.name);           // the spec names itself as the table does
+    EXPECT_EQ(parseMover(e.name).kind, e.spec.kind);
+    EXPECT_EQ(parseMover(e.name).inner, e.spec.inner);
+    EXPECT_EQ(moverDescription(e.name), e.description);
+    EXPECT_FALSE(e.description.empty()) << e.name;
+  }
+  EXPECT_EQ(parseMover("substep").name(), "substep-discrete");  // the older name
+}
+
 TEST(Movers, RejectBadSpecsNamingTheValue) {
   const auto message = [](MoverSpec s) {
     try {

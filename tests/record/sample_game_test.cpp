@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "platformer_game.hpp"
+#include "tv/app/platformer_game.hpp"
 #include "tv/record/recorder.hpp"
 #include "tv/record/replay.hpp"
 

@@ -11,7 +11,7 @@ namespace tv::app {
 
 struct SceneSource::Loaded {
   sim::SceneDef scene;
-  std::optional<std::string> mover;
+  std::optional<MoverSpec> mover;
   std::vector<std::string> notes;
 };
 
@@ -70,7 +70,7 @@ const SceneSource::Loaded& SceneSource::load() const {
       lv = level::loadSceneFile(sceneFile_);
     }
     auto l = std::make_shared<Loaded>();
-    l->mover = lv.mover;
+    if (lv.mover) l->mover = parseMover(*lv.mover);
     l->notes = lv.notes;
     l->scene = level::makeScene(std::move(lv));
     slot_->loaded = std::move(l);
@@ -81,7 +81,7 @@ const SceneSource::Loaded& SceneSource::load() const {
 const sim::SceneDef& SceneSource::scene() const {
   return load().scene;
 }
-std::optional<std::string> SceneSource::mover() const {
+std::optional<MoverSpec> SceneSource::mover() const {
   return load().mover;
 }
 std::vector<std::string> SceneSource::notes() const {

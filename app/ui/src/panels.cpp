@@ -92,7 +92,7 @@ void setDraft(DebuggerState& st, const Session& session, const std::string& name
 void syncDraft(DebuggerState& st, const Session& session) {
   st.draft = session.sim().params();
   st.draftScene = session.sim().scene().name;
-  st.draftMover = session.sim().moverSpec().name();
+  st.draftMover = session.sim().moverSpec();
 }
 
 Actions controlsContents(const Session& session, DebuggerState& st) {
@@ -113,15 +113,14 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
       ImGui::EndCombo();
     }
     rowLabel("mover");
-    if (ImGui::BeginCombo("##mover", st.draftMover.c_str())) {
-      for (const std::string_view m : moverNames()) {
-        const std::string name(m);
-        if (ImGui::Selectable(name.c_str(), name == st.draftMover)) {
-          st.draftMover = name;
+    if (ImGui::BeginCombo("##mover", st.draftMover.name().c_str())) {
+      for (const MoverEntry& m : moverTable()) {
+        const std::string name(m.name);
+        if (ImGui::Selectable(name.c_str(), name == st.draftMover.name())) {
+          st.draftMover = m.spec;
           a.restart = true;
         }
-        if (ImGui::IsItemHovered())
-          ImGui::SetTooltip("%s", std::string(moverDescription(m)).c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(m.description).c_str());
       }
       ImGui::EndCombo();
     }

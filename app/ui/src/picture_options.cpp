@@ -3,6 +3,7 @@
 
 #include "tv/app/flags.hpp"
 #include "tv/app/missing_value.hpp"
+#include "tv/app/movers.hpp"
 #include "tv/app/vocabulary.hpp"
 #include "tv/app/work_limit.hpp"
 
@@ -141,9 +142,21 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       }
       o.moverGiven = true;
       o.compare = name == "compare";
-      o.movers = o.compare ? splitList(name, value) : std::vector<std::string>{value};
-      if (o.compare && o.movers.size() < 2) {
+      const std::vector<std::string> names =
+          o.compare ? splitList(name, value) : std::vector<std::string>{value};
+      if (o.compare && names.size() < 2) {
         throw UsageError{"--compare: expected at least two movers (A,B), but got '" + value + "'"};
+      }
+      o.movers.clear();
+      for (const std::string& n : names) {
+        const MoverSpec m = app::parseMoverFlag<UsageError>(name, n);
+        for (const MoverSpec& before : o.movers) {
+          if (before.name() == m.name()) {
+            throw UsageError{"--compare: '" + n +
+                             "' is named twice; each panel shows a different mover"};
+          }
+        }
+        o.movers.push_back(m);
       }
     } else if (name == "tick") {
       if (o.tickGiven) throw UsageError{"--tick: the tick was already given (by --tick or --ticks)"};

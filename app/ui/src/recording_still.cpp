@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "tv/app/flags.hpp"
+#include "tv/app/movers.hpp"
 #include "tv/error.hpp"
 #include "tv/ui/still.hpp"
 
@@ -48,7 +49,7 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
       r.call = static_cast<std::uint32_t>(k);
       picked = "--call";
     } else if (arg == "--what-if") {
-      r.whatIf = std::string(value(i, arg));
+      r.whatIf = app::parseMoverFlag<UsageError>("what-if", value(i, arg));
       picked = "--what-if";
     } else if (arg == "--updates-as-moves") {
       r.updatesAsMoves = true;

@@ -83,17 +83,6 @@ sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o) {
   return p;
 }
 
-void refuseDuplicateMovers(const PictureOptions& o) {
-  for (std::size_t i = 0; i < o.movers.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      if (o.movers[i] == o.movers[j]) {
-        throw UsageError{"--compare: '" + o.movers[i] +
-                         "' is named twice; each panel shows a different mover"};
-      }
-    }
-  }
-}
-
 Overlays overlaysFor(const PictureOptions& o) {
   Overlays on;
   const auto apply = [&](const std::vector<std::string>& names, bool value, const char* flag) {
@@ -121,15 +110,8 @@ Overlays overlaysFor(const PictureOptions& o) {
 
 Still::Still(const PictureOptions& o) : o_(o), scene_(&sceneFor(o)) {
   const sim::Params params = paramsFor(*scene_, o);
-  refuseDuplicateMovers(o);
   (void)overlaysFor(o);  // a bad --hide/--show fails before anything runs
-  for (const std::string& m : o.movers) {
-    MoverSpec spec;
-    try {
-      spec = parseMover(m);
-    } catch (const Error& e) {
-      throw UsageError{std::string(o.compare ? "--compare" : "--mover") + ": " + app::userMessage(e)};
-    }
+  for (const MoverSpec& spec : o.movers) {
     try {
       sessions_.push_back(std::make_unique<Session>(*scene_, params, spec, std::nullopt));
     } catch (const Error& e) {

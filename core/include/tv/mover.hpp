@@ -68,6 +68,16 @@ struct MoverSpec {
   [[nodiscard]] std::string name() const;
 };
 
+/// One entry of the mover table.
+struct MoverEntry {
+  std::string_view name;  ///< as in moverNames(), tables, CSV columns and every tool's flags
+  MoverSpec spec;         ///< its kind (and inner step), every option at its default
+  std::string_view description;  ///< one line on what it does and when it fails
+};
+/// Every mover once, in the order of the comparison tables: the one list every tool reads to
+/// list, parse and describe movers.
+[[nodiscard]] std::span<const MoverEntry> moverTable();
+
 /// Parses a name from `moverNames()`; throws tv::Error listing the valid names otherwise.
 [[nodiscard]] MoverSpec parseMover(std::string_view name);
 /// Every mover name, in the order of the comparison tables.

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 
 namespace tv::app {
@@ -44,8 +45,9 @@ class SceneSource {
   /// or after the copy, and keep it alive). Throws
   /// tv::Error naming the file, the JSON path and the value.
   [[nodiscard]] const sim::SceneDef& scene() const;
-  /// The mover the file suggests (a scene file's "mover", a map's `mover` property).
-  [[nodiscard]] std::optional<std::string> mover() const;
+  /// The mover the file suggests (a scene file's "mover", a map's `mover` property; the loader
+  /// has checked the name against the mover table).
+  [[nodiscard]] std::optional<MoverSpec> mover() const;
   /// What the loader wants the user to know (e.g. that nothing in a map is collidable).
   [[nodiscard]] std::vector<std::string> notes() const;
 

@@ -34,7 +34,7 @@ struct DebuggerState {
   /// Edited copies, applied by a restart.
   sim::Params draft;
   std::string draftScene;
-  std::string draftMover;
+  MoverSpec draftMover;
   std::string error;  ///< the last rejected edit, shown in red until the next one
   /// How long the last re-run to the current tick took (wall ms, set by the viewer): sliders
   /// re-run live while it is under kLiveRerunMs, else on release.

@@ -1,8 +1,8 @@
 #pragma once
 /// The command line that names a picture: scene, mover or movers, tick, window, traced body,
 /// view, render rate, overlays and scene parameters. tv-render and tv-debugger's screenshot mode
-/// read the same flags, so one command line gives the same picture from either. Parsing only
-/// checks the form of each flag; names (scene, mover, parameter) are checked against the
+/// read the same flags, so one command line gives the same picture from either. Movers are
+/// parsed here, from the mover table; the scene and its parameters are checked against the
 /// registry by `Still`, with the flag named in the message.
 
 #include <cstdint>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tv/app/scene_source.hpp"
+#include "tv/mover.hpp"
 
 namespace tv::ui {
 
@@ -27,7 +28,8 @@ struct PictureOptions {
   bool list = false;
   bool timing = false;
   std::string scene = "bullets-wall";
-  std::vector<std::string> movers = {"continuous"};
+  /// --mover or --compare, parsed where typed (each named once; a comparison has two or more).
+  std::vector<MoverSpec> movers = {MoverSpec{.kind = MoverKind::continuous}};
   bool compare = false;
   std::vector<std::uint64_t> ticks = {1};  ///< increasing, no repeats
   int width = 1280, height = 720;  ///< --window WxH (--size is the body size, a parameter)

@@ -21,7 +21,7 @@ struct RecordingFlags {
   std::uint64_t frame = 0;            ///< --frame N
   std::optional<std::string> item;    ///< --item LABEL: the item traced
   std::optional<std::uint32_t> call;  ///< --call K: the call of the frame selected
-  std::optional<std::string> whatIf;  ///< --what-if MOVER: re-run beside it (tv-debugger)
+  std::optional<MoverSpec> whatIf;    ///< --what-if MOVER: re-run beside it (tv-debugger)
   bool updatesAsMoves = false;        ///< --updates-as-moves: for the what-if run
 };
 

@@ -22,8 +22,6 @@ namespace tv::ui {
 [[nodiscard]] const sim::SceneDef& sceneFor(const PictureOptions& o);
 /// The scene's defaults with every `--NAME VALUE` of `o` applied; UsageError naming the flag.
 [[nodiscard]] sim::Params paramsFor(const sim::SceneDef& scene, const PictureOptions& o);
-/// UsageError when `--compare` names a mover twice (two panels would show one run).
-void refuseDuplicateMovers(const PictureOptions& o);
 /// The overlays after `--hide` and `--show`; UsageError naming an unknown overlay.
 [[nodiscard]] Overlays overlaysFor(const PictureOptions& o);
 

@@ -1,5 +1,5 @@
 #pragma once
-/// Scene files: a level as JSON (the format is documented in the README, "Scene files").
+/// Scene files: a level as JSON (the format is documented in core/level/FORMAT.md, "Scene files").
 /// Reading is strict: an unknown key, a wrong type or a value out of range throws tv::Error
 /// naming the file, the JSON path and the value, and nothing is returned half-read.
 

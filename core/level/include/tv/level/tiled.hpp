@@ -5,8 +5,8 @@
 /// `TiledOptions::solidLayers`, and every tile whose tileset tile has `collidable` true (STI's
 /// convention); every rectangle object whose layer is solid that way or whose own `collidable`
 /// is true. Objects of class (Tiled 1.9+) or type `player`, `walker`, `bullet` or `spawner`
-/// become bodies (their properties: README, "Tiled maps"). Tile data: CSV arrays or base64
-/// (uncompressed, zlib, gzip), finite or infinite (chunks); flip flags are masked off.
+/// become bodies (their properties: core/level/FORMAT.md, "Tiled maps"). Tile data: CSV arrays
+/// or base64 (uncompressed, zlib, gzip), finite or infinite (chunks); flip flags are masked off.
 /// Anything else that matters (isometric, hexagonal or staggered maps, zstd, XML tilesets,
 /// rotated or non-rectangular collidable objects) throws tv::Error naming it as unsupported.
 

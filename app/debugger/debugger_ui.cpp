@@ -219,24 +219,23 @@ float Debugger::drawMenuBar() {
   }
   if (ImGui::BeginMenu("Movers")) {
     ImGui::TextColored(colour(pal::kDim), compare() ? "compared (lockstep):" : "mover:");
-    for (const std::string_view name : moverNames()) {
-      const std::string n(name);
+    for (const MoverEntry& entry : moverTable()) {
+      const std::string n(entry.name);
       const auto at = std::find_if(movers_.begin(), movers_.end(),
                                    [&](const MoverSpec& m) { return m.name() == n; });
       const bool on = at != movers_.end();
       if (ImGui::MenuItem(n.c_str(), nullptr, on)) {
         std::vector<MoverSpec> next = movers_;
         if (!compare()) {
-          next = {parseMover(n)};
+          next = {entry.spec};
         } else if (on && next.size() > 1) {
           next.erase(next.begin() + (at - movers_.begin()));
         } else if (!on) {
-          next.push_back(parseMover(n));
+          next.push_back(entry.spec);
         }
         setMovers(std::move(next));
       }
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s", std::string(moverDescription(name)).c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(entry.description).c_str());
     }
     ImGui::Separator();
     item(compare() ? "One mover" : "Compare discrete / substep / continuous", Command::compare);
@@ -607,9 +606,9 @@ void Debugger::useSubstepLength(double length) {
   // its "before" stays.
   if (m.kind != MoverKind::substep) {
     if (compare()) {
-      movers.push_back(parseMover("substep-discrete"));
+      movers.push_back(MoverSpec{.kind = MoverKind::substep});
     } else {
-      movers.front() = parseMover("substep-discrete");
+      movers.front() = MoverSpec{.kind = MoverKind::substep};
     }
   }
   try {

@@ -3,14 +3,14 @@
 # rewrites screenshots/README.md from the same list, so the pictures, their captions and the
 # tests (tests/app) never disagree.
 #
-#   app/headless/regenerate_goldens.sh [path/to/tv-render]    (EXAMPLE=path/to/the example game)
+#   app/render/regenerate_goldens.sh [path/to/tv-render]    (EXAMPLE=path/to/the example game)
 #   cmake --build build/release --target tv-goldens        # the same, through CMake
 #
 # The goldens are pinned to Debian 12's Mesa (llvmpipe): render them there.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-render="$(realpath -m "${1:-$root/build/release/app/headless/tv-render}")"
+render="$(realpath -m "${1:-$root/build/release/app/render/tv-render}")"
 list="$root/screenshots/goldens.txt"
 readme="$root/screenshots/README.md"
 
@@ -42,9 +42,15 @@ unset GALLIUM_DRIVER LIBGL_ALWAYS_SOFTWARE
   echo "# Golden screenshots"
   echo
   echo "Rendered by \`tv-render\` (OSMesa, llvmpipe, Debian 12) from the list in"
-  echo "[goldens.txt](goldens.txt); \`app/headless/regenerate_goldens.sh\` (or the CMake target"
+  echo "[goldens.txt](goldens.txt); \`app/render/regenerate_goldens.sh\` (or the CMake target"
   echo "\`tv-goldens\`) renders them all again and rewrites this page. \`ctest -R golden\` renders"
-  echo "each one and compares it pixel for pixel (see tests/app)."
+  echo "each one again, under the default rasterizer and under llvmpipe's 128- and 256-bit vector"
+  echo "widths, and compares it with the golden. The comparison tolerates what another Mesa build or"
+  echo "CPU changes and nothing a reader would see: no pixel may differ by more than 4 levels in any"
+  echo "channel, and at most 2% of the pixels may differ at all (Mesa 22.3.6's deb12u1 and deb12u2"
+  echo "builds differ on up to 0.66% of the pixels, by at most 2 levels). A line or a body moved by a"
+  echo "pixel, a missing label or a palette colour changed by 5 levels fails"
+  echo "(tests/app/golden_tolerance_test.cpp); \`TV_GOLDEN_TOLERANCE=C:F\` overrides the bounds."
   echo
   echo "Colours: grey solids, teal bodies (dark once stopped), blue cells shaded by item count,"
   echo "yellow cells the traced move visited, magenta candidates, white sweep, light-blue hull,"
@@ -74,7 +80,7 @@ while IFS= read -r line; do
   } >> "$readme"
   count=$((count + 1))
 done < "$list"
-# The debugger's own screenshots have their page (app/viewer/regenerate_screenshots.sh).
+# The debugger's own screenshots have their page (app/debugger/regenerate_screenshots.sh).
 if [[ -f "$root/screenshots/DEBUGGER.md" ]]; then
   {
     echo

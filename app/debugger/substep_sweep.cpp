@@ -56,7 +56,7 @@ void SubstepSweep::reset(const sim::SceneDef& scene, const sim::Params& params, 
   const double tile = params.get(sim::param::tile);
   for (const double f : kFractions) lengths_.push_back(tile * f);
   try {
-    sim::Simulation exact(scene, params, parseMover("continuous"));
+    sim::Simulation exact(scene, params, MoverSpec{.kind = MoverKind::continuous});
     exact_ = positionsAfter(exact, ticks_);
   } catch (const Error& e) {
     error_ = app::userMessage(e);

@@ -466,15 +466,15 @@ void RecordingDebugger::drawWhatIfControls() {
       "Every recorded move is made again by another mover, beside the recorded "
       "run.");
   ImGui::SetNextItemWidth(200.0f);
-  if (ImGui::BeginCombo("mover", draftMover_.c_str())) {
-    for (const std::string_view m : moverNames()) {
-      const std::string name(m);
-      if (ImGui::Selectable(name.c_str(), name == draftMover_)) draftMover_ = name;
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(moverDescription(m)).c_str());
+  if (ImGui::BeginCombo("mover", draftMover_.name().c_str())) {
+    for (const MoverEntry& m : moverTable()) {
+      const std::string name(m.name);
+      if (ImGui::Selectable(name.c_str(), name == draftMover_.name())) draftMover_ = m.spec;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(m.description).c_str());
     }
     ImGui::EndCombo();
   }
-  const bool substep = draftMover_.rfind("substep", 0) == 0;
+  const bool substep = draftMover_.kind == MoverKind::substep;
   ImGui::BeginDisabled(!substep);
   ImGui::SetNextItemWidth(200.0f);
   const double lo = 0.0, hi = 1e6;
@@ -488,13 +488,9 @@ void RecordingDebugger::drawWhatIfControls() {
         "each update that only changes a position is re-run as a move");
   }
   if (ImGui::Button("Run")) {
-    try {
-      MoverSpec m = parseMover(draftMover_);
-      if (substep) m.maxStep = draftSubstep_;
-      startWhatIf(m, draftUpdates_);
-    } catch (const std::exception& e) {
-      report(app::userMessage(e));
-    }
+    MoverSpec m = draftMover_;
+    if (substep) m.maxStep = draftSubstep_;
+    startWhatIf(m, draftUpdates_);
   }
   ImGui::SameLine();
   if (ImGui::Button("Recorded run only") && whatIf_) whatIf_.reset();

@@ -1,6 +1,7 @@
 #pragma once
 // The sample platformer's game logic (tv-example-platformer), shared with the tests that record
-// it, validate it and re-run it under other movers. See platformer.cpp.
+// it, validate it and re-run it under other movers, and with the benchmark. See
+// app/examples/platformer.cpp.
 
 #include <cmath>
 #include <cstdint>

@@ -3,11 +3,11 @@
 # tv-debugger --app-screenshot under a virtual X server, and rewrites screenshots/DEBUGGER.md
 # from the same list.
 #
-#   app/viewer/regenerate_screenshots.sh [path/to/tv-debugger]  (EXAMPLE=path/to/the example game)
+#   app/debugger/regenerate_screenshots.sh [path/to/tv-debugger]  (EXAMPLE=path/to/the example game)
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-debugger="$(realpath -m "${1:-$root/build/release/app/viewer/tv-debugger}")"
+debugger="$(realpath -m "${1:-$root/build/release/app/debugger/tv-debugger}")"
 list="$root/screenshots/debugger.txt"
 page="$root/screenshots/DEBUGGER.md"
 
@@ -34,7 +34,7 @@ fi
   echo "# Debugger screenshots"
   echo
   echo "The interactive debugger (\`tv-debugger\`) as a person sees it at 1280x720, rendered from"
-  echo "the list in [debugger.txt](debugger.txt) by \`app/viewer/regenerate_screenshots.sh\`. Unlike"
+  echo "the list in [debugger.txt](debugger.txt) by \`app/debugger/regenerate_screenshots.sh\`. Unlike"
   echo "the [goldens](README.md) nothing compares these pixel for pixel; the test that holds the"
   echo "debugger to tv-render's pictures is \`ctest -R viewer.screenshot\`."
 } > "$page"

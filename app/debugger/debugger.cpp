@@ -20,18 +20,6 @@ constexpr double kMinSpeed = 0.25, kMaxSpeed = 4.0;
 // than fall further behind (a huge scene at 4x).
 constexpr int kMaxFramesPerDraw = 16;
 
-std::vector<MoverSpec> parseMovers(const std::vector<std::string>& names, const char* flag) {
-  std::vector<MoverSpec> out;
-  for (const std::string& n : names) {
-    try {
-      out.push_back(parseMover(n));
-    } catch (const Error& e) {
-      throw ui::UsageError{std::string(flag) + ": " + app::userMessage(e)};
-    }
-  }
-  return out;
-}
-
 std::vector<std::string> splitCommas(const std::string& s) {
   std::vector<std::string> out;
   std::size_t start = 0;
@@ -50,24 +38,28 @@ std::vector<std::string> splitCommas(const std::string& s) {
 Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   ui::PictureOptions o = options.picture;
   // Saved settings fill in what the command line leaves out.
-  std::vector<std::string> moverNames = o.movers;
+  std::vector<MoverSpec> movers = o.movers;
   if (settings) {
     if (!o.sceneGiven) {
       if (const auto s = settings->get("scene"); s && sim::builtinScenes().tryFind(*s))
         o.scene = *s;
     }
     if (!o.moverGiven) {
+      // Saved names are parsed here, where they were typed (or saved); a hand-edited list with
+      // an unknown or repeated name is ignored whole.
       if (const auto m = settings->get("movers")) {
-        const auto names = splitCommas(*m);
-        bool valid = !names.empty();
-        for (const std::string& n : names) {
+        std::vector<MoverSpec> saved;
+        bool valid = true;
+        for (const std::string& n : splitCommas(*m)) {
           try {
-            (void)parseMover(n);
+            const MoverSpec spec = parseMover(n);
+            for (const MoverSpec& before : saved) valid = valid && before.name() != spec.name();
+            saved.push_back(spec);
           } catch (const Error&) {
             valid = false;
           }
         }
-        if (valid) moverNames = names;
+        if (valid && !saved.empty()) movers = std::move(saved);
       }
     }
     overlay_ = settings->getBool("overlay", false);
@@ -79,7 +71,7 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   showSweep_ = options.sweep;
   if (o.file.given()) {
     files_.push_back(o.file);
-    if (const auto m = o.file.mover(); m && !o.moverGiven) moverNames = {*m};
+    if (const auto m = o.file.mover(); m && !o.moverGiven) movers = {*m};
     for (const std::string& note : o.file.notes())
       std::fprintf(stderr, "tv-debugger: note: %s\n", note.c_str());
   }
@@ -98,12 +90,6 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   }
   const ui::Overlays overlays = ui::overlaysFor(o);
   selected_ = o.body;
-  {
-    ui::PictureOptions named = o;
-    named.movers = moverNames;
-    ui::refuseDuplicateMovers(named);
-  }
-  std::vector<MoverSpec> movers = parseMovers(moverNames, o.compare ? "--compare" : "--mover");
 
   states_.assign(1, ui::DebuggerState{});
   states_[0].overlays = overlays;
@@ -358,13 +344,7 @@ void Debugger::applyActions(const ui::Actions& a) {
     if (const sim::SceneDef* s = sim::builtinScenes().tryFind(st.draftScene)) loadScene(*s);
     return;
   }
-  MoverSpec primary;
-  try {
-    primary = parseMover(st.draftMover);
-  } catch (const Error& e) {
-    reportError(app::userMessage(e));
-    return;
-  }
+  const MoverSpec primary = st.draftMover;
   const bool tuned = primary.name() != movers_.front().name() ||
                      !std::equal(st.draft.values().begin(), st.draft.values().end(),
                                  params_.values().begin(), params_.values().end());
@@ -478,8 +458,8 @@ void Debugger::run(Command c) {
       if (compare()) {
         setMovers({movers_.front()});
       } else {
-        setMovers(
-            {parseMover("discrete"), parseMover("substep-discrete"), parseMover("continuous")});
+        setMovers({MoverSpec{.kind = MoverKind::discrete}, MoverSpec{.kind = MoverKind::substep},
+                   MoverSpec{.kind = MoverKind::continuous}});
       }
       break;
     case Command::overlay:

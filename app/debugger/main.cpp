@@ -34,8 +34,8 @@ void printList() {
     std::printf("  %-16s %-11s %s\n", s.name.c_str(), s.category.c_str(), s.description.c_str());
   }
   std::cout << "movers:\n";
-  for (const std::string_view m : moverNames()) {
-    std::printf("  %-16s %s\n", std::string(m).c_str(), std::string(moverDescription(m)).c_str());
+  for (const MoverEntry& m : moverTable()) {
+    std::printf("  %-16s %s\n", std::string(m.name).c_str(), std::string(m.description).c_str());
   }
 }
 
@@ -124,7 +124,8 @@ int interactive(const ViewerOptions& o) {
     // The first run opens on the moment that matters: the tick the naive bullet passes the
     // wall, followed, beside the substep patch and the exact sweep.
     p.scene = "bullets-wall";
-    p.movers = {"discrete", "substep-discrete", "continuous"};
+    p.movers = {MoverSpec{.kind = MoverKind::discrete}, MoverSpec{.kind = MoverKind::substep},
+                MoverSpec{.kind = MoverKind::continuous}};
     p.compare = true;
     p.ticks = {2};
     p.body = 2;
@@ -139,15 +140,7 @@ int interactive(const ViewerOptions& o) {
     RecordingDebugger& r = debugger.openRecording(o.recording->path);
     r.show(o.recording->frame, o.recording->call, o.recording->item);
     r.setView(o.picture);
-    if (o.recording->whatIf) {
-      MoverSpec m;
-      try {
-        m = parseMover(*o.recording->whatIf);
-      } catch (const Error& e) {
-        throw ui::UsageError{std::string("--what-if: ") + app::userMessage(e)};
-      }
-      r.startWhatIf(m, o.recording->updatesAsMoves);
-    }
+    if (o.recording->whatIf) r.startWhatIf(*o.recording->whatIf, o.recording->updatesAsMoves);
     if (!loaded && !shot) r.openHelp();
   }
   WindowConfig config{o.picture.width, o.picture.height, "Tunnelvision debugger", shot};

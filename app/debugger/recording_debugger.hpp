@@ -114,7 +114,7 @@ class RecordingDebugger {
   };
   std::unique_ptr<WhatIf> whatIf_;
   bool showWhatIf_ = false;  // the controls window
-  std::string draftMover_ = "discrete";
+  MoverSpec draftMover_{.kind = MoverKind::discrete};
   double draftSubstep_ = 0.0;  // 0: half the smallest item
   bool draftUpdates_ = false;
 };

@@ -50,8 +50,8 @@ void printList() {
     std::printf("  %-16s %s\n", "", line.c_str());
   }
   std::cout << "movers:\n";
-  for (const std::string_view m : moverNames()) {
-    std::printf("  %-16s %s\n", std::string(m).c_str(), std::string(moverDescription(m)).c_str());
+  for (const MoverEntry& m : moverTable()) {
+    std::printf("  %-16s %s\n", std::string(m.name).c_str(), std::string(m.description).c_str());
   }
 }
 
@@ -63,7 +63,7 @@ std::string outputName(const Options& o, std::uint64_t tick) {
     name = *o.out;
   } else {
     std::string movers;
-    for (const std::string& m : o.movers) movers += (movers.empty() ? "" : "-vs-") + m;
+    for (const MoverSpec& m : o.movers) movers += (movers.empty() ? "" : "-vs-") + m.name();
     name = o.scene + "_" + movers + "_{tick}.png";
   }
   for (std::size_t at; (at = name.find("{tick}")) != std::string::npos;) {
