@@ -338,6 +338,7 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
         MoveOptions o;
         o.broad = c.broad;
         o.maxResponses = c.maxResponses;
+        o.semantics = c.semantics;
         o.trace = trace;
         const MoveResult r = world->move(c.item, c.goal, filter, o);
         if (compare) compareMove("", r.position, r.collisions, c.position, c.collisions);
@@ -367,6 +368,7 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
         MoveOptions o;
         o.broad = c.broad;
         o.maxResponses = c.maxResponses;
+        o.semantics = c.semantics;
         o.trace = trace;
         const MoveResult r = c.kind == CallKind::check ? world->check(c.item, c.goal, filter, o)
                                                        : world->project(c.rect, c.goal, filter, o);
