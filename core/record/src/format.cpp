@@ -10,6 +10,8 @@
 #include <cstring>
 #include <type_traits>
 
+#include "tv/bump.hpp"
+
 namespace tv::rec {
 
 namespace {
@@ -319,7 +321,7 @@ void Encoder::legBlock(std::span<const Leg> legs) {
   out.varint(legs.size());
   Leg prev;
   for (const Leg& l : legs) {
-    out.u8(l.passThrough ? 1 : 0);
+    out.u8(static_cast<std::uint8_t>((l.passThrough ? 1 : 0) | (l.stop ? 2 : 0)));
     Group g(out);
     g.put(l.start.x, prev.goal.x, prev.start.x);
     g.put(l.start.y, prev.goal.y, prev.start.y);
@@ -337,6 +339,7 @@ void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
   std::uint8_t flags = item(id.index);
   std::uint8_t extras = static_cast<std::uint8_t>(
       (o.broad == BroadPhase::bounds ? kBounds : 0) |
+      (o.semantics == MoveSemantics::bump ? kBump : 0) |
       (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
       (!legs.empty() ? kHasLegs : 0));
   Model::Slot& s = model.slots[id.index];
@@ -401,6 +404,7 @@ void Encoder::project(const Rect& rect, Vec2 goalPos, const MoveOptions& o, cons
   std::uint8_t flags = 0;
   const std::uint8_t extras = static_cast<std::uint8_t>(
       (o.broad == BroadPhase::bounds ? kBounds : 0) |
+      (o.semantics == MoveSemantics::bump ? kBump : 0) |
       (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
       (!legs.empty() ? kHasLegs : 0));
   if (extras) {
@@ -705,9 +709,11 @@ void readCollisions(In& in, Model& m, Call& c, std::size_t n, ItemId self, const
       col.move.y = g.get(legGoal.y - col.itemRect.y, 0.0);
       col.ti = g.get(0.0, prevTi);
     }
-    if (!col.overlaps && !(col.ti >= 0.0 && col.ti <= 1.0)) {
-      in.fail("collision ti " + formatNumber(col.ti) +
-              " is outside [0, 1] for a hit that does not overlap");
+    // bump's rules take a hit up to its margin behind the start (a resting contact).
+    const double earliest = c.semantics == MoveSemantics::bump ? -bump::kDelta : 0.0;
+    if (!col.overlaps && !(col.ti >= earliest && col.ti <= 1.0)) {
+      in.fail("collision ti " + formatNumber(col.ti) + " is outside [" + formatNumber(earliest) +
+              ", 1] for a hit that does not overlap");
     }
     {
       const Rect o = m.slots[col.other.index].rect;
@@ -796,8 +802,9 @@ void readLegs(In& in, Call& c) {
   for (std::size_t k = 0; k < n; ++k) {
     Leg l;
     const std::uint8_t f = in.u8("leg flags");
-    if (f > 1) in.fail("leg flags " + std::to_string(f) + " are not defined");
+    if (f > 3) in.fail("leg flags " + std::to_string(f) + " are not defined");
     l.passThrough = f & 1;
+    l.stop = f & 2;
     GroupIn g(in, "leg");
     l.start.x = g.get(prev.goal.x, prev.start.x);
     l.start.y = g.get(prev.goal.y, prev.start.y);
@@ -935,6 +942,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.item = c.skip = {};
   c.broad = BroadPhase::swept;
   c.maxResponses = kDefaultMaxResponses;
+  c.semantics = MoveSemantics::tunnelvision;
   c.maxEvents = kDefaultMaxEvents;
   const std::uint8_t kb = in.u8("call kind");
   const std::uint8_t kindBits = kb & 0x0F;
@@ -1039,15 +1047,16 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       if (kb & kExtras) {
         extras = readExtras(
             in, mover ? static_cast<std::uint8_t>(kHasAnswers | kHasLegs)
-                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers | kHasLegs));
+                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers | kHasLegs | kBump));
         if (extras & kBounds) c.broad = BroadPhase::bounds;
+        if (extras & kBump) c.semantics = MoveSemantics::bump;
         if (extras & kLimit) c.maxResponses = readLimit(in, "maxResponses", 4096);
       }
       Model::Slot& s = m.slots[c.item.index];
       c.start = s.rect;
       c.goal = readGoal(in, s, "goal");
-      const bool hull =
-          c.broad == BroadPhase::bounds || (mover && m.movers[c.mover].kind == MoverKind::sweep);
+      const bool hull = c.broad == BroadPhase::bounds || c.semantics == MoveSemantics::bump ||
+                        (mover && m.movers[c.mover].kind == MoverKind::sweep);
       requireReach(in, m, c.offset, s.rect, c.goal, hull, maxCells, c.kind);
       const Vec2 d = c.goal - s.rect.position();
       if (sameBits(s.rect.x + d.x, c.goal.x) && sameBits(s.rect.y + d.y, c.goal.y)) s.lastDelta = d;
@@ -1065,8 +1074,9 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       onlyFlags(kExtras | kFree);
       std::uint8_t extras = 0;
       if (kb & kExtras) {
-        extras = readExtras(in, kBounds | kLimit | kHasAnswers | kHasLegs);
+        extras = readExtras(in, kBounds | kLimit | kHasAnswers | kHasLegs | kBump);
         if (extras & kBounds) c.broad = BroadPhase::bounds;
+        if (extras & kBump) c.semantics = MoveSemantics::bump;
         if (extras & kLimit) c.maxResponses = readLimit(in, "maxResponses", 4096);
       }
       {
@@ -1084,7 +1094,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       }
       if (!(c.rect.w > 0 && c.rect.h > 0))
         in.failAt(c.offset, "project of a rect with w or h <= 0");
-      requireReach(in, m, c.offset, c.rect, c.goal, c.broad == BroadPhase::bounds, maxCells,
+      requireReach(in, m, c.offset, c.rect, c.goal,
+                   c.broad == BroadPhase::bounds || c.semantics == MoveSemantics::bump, maxCells,
                    "project");
       if (kb & kFree) {
         c.position = c.goal;
@@ -1114,8 +1125,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       c.rect.h = g.get(p.h, c.rect.w);
       // The world cannot hold what a negative size means (and would not be asked it).
       if (c.rect.w < 0 || c.rect.h < 0) in.failAt(c.offset, "a query rect with a negative size");
-      requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells,
-                   callKindName(c.kind));
+      requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells, c.kind);
       if (any) {
         c.any = kb & kAny;
         if (kb & kAnswers) readAnswers(in, m, c, c.skip);

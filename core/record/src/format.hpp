@@ -20,7 +20,7 @@ namespace tv::rec {
 
 inline constexpr char kMagic[8] = {'T', 'V', 'R', 'E', 'C', 0, '\r', '\n'};
 inline constexpr std::uint16_t kVersionMajor = 1;
-inline constexpr std::uint16_t kVersionMinor = 0;
+inline constexpr std::uint16_t kVersionMinor = 1;
 inline constexpr std::size_t kHeaderSize = 32;
 inline constexpr std::uint32_t kEndMark = 0x21444E45u;  // "END!": the chunk that closes a file
 inline constexpr std::uint32_t kMaxChunk = 1u << 30;
@@ -40,7 +40,8 @@ enum : std::uint8_t {
   kAnswers = 0x80,
 };
 // Extras byte.
-enum : std::uint8_t { kBounds = 1, kLimit = 2, kHasAnswers = 4, kHasLegs = 8 };
+// kBump: the call follows bump.lua's rules (MoveSemantics::bump).
+enum : std::uint8_t { kBounds = 1, kLimit = 2, kHasAnswers = 4, kHasLegs = 8, kBump = 16 };
 
 struct Answer {
   ItemId item, other;
@@ -66,6 +67,7 @@ struct Call {
   ItemId skip;
   BroadPhase broad = BroadPhase::swept;
   int maxResponses = kDefaultMaxResponses;
+  MoveSemantics semantics = MoveSemantics::tunnelvision;
   Vec2 position;
   std::vector<Collision> collisions;
   std::vector<ItemId> found;

@@ -36,6 +36,7 @@
 
 namespace tv {
 
+/// How a Recorder writes.
 struct RecorderOptions {
   /// Frames between keyframes (whole-world snapshots), so that seeking costs at most this many
   /// frames of replay. Range [1, 2^20]; default 64.
@@ -56,6 +57,9 @@ struct RecorderOptions {
   bool flushOnCrash = true;
 };
 
+/// Writes everything a game asks of the World it is attached to, with the results, into a
+/// `.tvrec` file (or memory), one chunk per frame. See the file's overview for the five lines a
+/// game adds.
 class Recorder final : public WorldObserver {
  public:
   /// Creates (or truncates) `path` and writes the header. Throws tv::Error naming the path and
@@ -90,15 +94,18 @@ class Recorder final : public WorldObserver {
   /// FixedStep it was attached to. The recorder records nothing after it.
   void close();
 
-  /// False once the recording stopped on an error (known to the game's thread once the writer
-  /// met it; after close(), always).
+  /// False once the recording stopped on an error (disk full...): the recording stopped there,
+  /// the game goes on. The game's thread learns of an error once the writer has met it; after
+  /// close(), of every error.
   [[nodiscard]] bool ok() const;
+  /// Why the recording stopped, naming the file and the system's reason; empty while ok().
   [[nodiscard]] const std::string& error() const;
   /// Waits until the writer has written every frame handed over so far.
   void sync() const;
-  /// Frames handed over (each frame() or FixedStep advance; close() hands over the last).
+  /// Frames handed over so far (each frame() or FixedStep advance; close() hands over the last).
   [[nodiscard]] std::uint64_t frames() const { return frames_; }
-  [[nodiscard]] std::uint64_t calls() const { return calls_; }
+  [[nodiscard]] std::uint64_t calls() const { return calls_; }  ///< calls recorded so far
+  /// Moves recorded so far (World::move, check, project, Mover::move; a Batch::step's bodies).
   [[nodiscard]] std::uint64_t moves() const { return moves_; }
   /// Bytes written of the frames handed over (waits for the writer); the file size once closed.
   [[nodiscard]] std::uint64_t size() const;
@@ -108,7 +115,7 @@ class Recorder final : public WorldObserver {
   /// Times the game's thread waited because the writer was maxQueueBytes behind.
   [[nodiscard]] std::uint64_t stalls() const;
 
-  // WorldObserver
+  // WorldObserver: what the world reports, recorded (documented there)
   void attached(const World& world) override;
   void detached(const World& world) override;
   void added(ItemId id, const Rect& r) override;
