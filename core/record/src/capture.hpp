@@ -89,6 +89,7 @@ struct MoveRec {
   Vec2 goal, position;
   std::uint32_t collisions, answers, legs;
   BroadPhase broad;
+  MoveSemantics semantics;  // every MoveOptions field but the trace (which is not recorded)
 };
 // queryRect, queryPoint, querySegment, anyOverlap; followed by ItemId[] or SegmentHit[], Answer[].
 struct QueryRec {

@@ -117,18 +117,19 @@ struct Recorder::Impl {
     constexpr std::size_t kFixed = sizeof(rec::Head) + rec::round8(sizeof(rec::MoveRec));
     const int maxResponses = o ? o->maxResponses : rec::kDefaultMaxResponses;
     const BroadPhase broad = o ? o->broad : BroadPhase::swept;
+    const MoveSemantics semantics = o ? o->semantics : MoveSemantics::tunnelvision;
     if (r.collisions.empty() && answers.empty() && legs.empty()) [[likely]] {
       std::byte* p = pipe->reserve(kFixed);
       ::new (p) rec::Head{tag, 0, 0, static_cast<std::uint32_t>(kFixed)};
       ::new (p + sizeof(rec::Head))
-          rec::MoveRec{id, mover, maxResponses, rect, goal, r.position, 0, 0, 0, broad};
+          rec::MoveRec{id, mover, maxResponses, rect, goal, r.position, 0, 0, 0, broad, semantics};
       return;
     }
     moveWithArrays(tag,
                    rec::MoveRec{id, mover, maxResponses, rect, goal, r.position,
                                 static_cast<std::uint32_t>(r.collisions.size()),
                                 static_cast<std::uint32_t>(answers.size()),
-                                static_cast<std::uint32_t>(legs.size()), broad},
+                                static_cast<std::uint32_t>(legs.size()), broad, semantics},
                    r.collisions);
   }
   [[gnu::noinline]] void moveWithArrays(rec::Tag tag, const rec::MoveRec& m,

@@ -279,6 +279,7 @@ std::optional<Divergence> Replay::Impl::replayMove(MoveTrace* trace, bool compar
       MoveOptions o;
       o.broad = c.broad;
       o.maxResponses = c.maxResponses;
+      o.semantics = c.semantics;
       o.trace = trace;
       r = world->move(c.item, c.goal, filter, o);
     } else {

@@ -202,6 +202,7 @@ void Writer::record(const std::byte* p) {
         MoveOptions o;
         o.broad = m.broad;
         o.maxResponses = m.maxResponses;
+        o.semantics = m.semantics;
         e.project(m.rect, m.goal, o, result, as, ls);
         return;
       }
@@ -220,6 +221,7 @@ void Writer::record(const std::byte* p) {
       MoveOptions o;
       o.broad = m.broad;
       o.maxResponses = m.maxResponses;
+      o.semantics = m.semantics;
       e.move(h.tag == Tag::move ? CallKind::move : CallKind::check, m.id, m.goal, o, result, as,
              ls);
       return;
