@@ -2,7 +2,8 @@
 /// A game watched while it runs: the recorder's own chunks streamed over a TCP socket (loopback
 /// unless the user names another host) to a receiver — tv-debugger, `tv-replay --listen`, or
 /// any program using tv::LiveReceiver. A stream saved is a valid `.tvrec` file
-/// (core/record/FORMAT.md, "Live streams").
+/// (core/record/FORMAT.md, "Live streams"). POSIX sockets, or Winsock 2 on Windows (a program
+/// linking tv::record statically there also links ws2_32; the CMake package names it).
 ///
 /// The game's side (Recorder::stream, or a Recorder made from LiveOptions alone):
 ///
@@ -51,9 +52,11 @@
 
 namespace tv {
 
-/// The game's side of a live stream.
+/// The game's side of a live stream. Recorder(LiveOptions) and Recorder::stream throw
+/// tv::Error naming the field and its value when one is malformed or out of range.
 struct LiveOptions {
-  /// Where the receiver listens: "HOST:PORT", "[IPv6]:PORT", or "PORT" (host 127.0.0.1).
+  /// Where the receiver listens: "HOST:PORT", "[IPv6]:PORT", or "PORT" (host 127.0.0.1); port
+  /// 1..65535. Default "127.0.0.1:7720".
   std::string address = "127.0.0.1:7720";
   /// Let the receiver pause the game and step it a frame at a time: the game's frame mark
   /// (Recorder::frame, or its FixedStep's advance) then blocks while it is paused. Off: pause
@@ -62,8 +65,8 @@ struct LiveOptions {
   /// Seconds between connection attempts while no receiver listens. Range [0.05, 3600];
   /// default 2.
   double retrySeconds = 2.0;
-  /// Most bytes of frames waiting to be sent (default 64 MiB): a receiver further behind is
-  /// disconnected, and the game goes on.
+  /// Most bytes of frames waiting to be sent (at least 1 MiB; default 64 MiB): a receiver
+  /// further behind is disconnected, and the game goes on.
   std::size_t maxPendingBytes = std::size_t{64} << 20;
   /// Told each change of the connection ("connected to 127.0.0.1:7720", "no receiver at
   /// 127.0.0.1:7720 (connection refused); trying again every 2 s", "disconnected: ..."), on
@@ -91,43 +94,58 @@ struct LiveReceiverOptions {
   /// Where to listen: "HOST:PORT", "[IPv6]:PORT" or "PORT" (127.0.0.1: loopback unless the
   /// user asks for another address). Port 0 takes any free port (see LiveReceiver::port).
   std::string address = "127.0.0.1:7720";
-  /// The frames kept of the current run: the oldest are dropped beyond `keepFrames` frames (0:
-  /// no limit by count) or `keepBytes` bytes (default 256 MiB), a keyframe's group at a time
-  /// so that what is kept can be replayed. Range of keepBytes: at least 1 MiB.
+  /// Most frames kept of the current run (0, the default: no limit by count). Beyond it the
+  /// oldest are dropped, a keyframe's group at a time so that what is kept can be replayed.
   std::uint64_t keepFrames = 0;
+  /// Most bytes of frames kept of the current run (chunks as a file holds them, plus each
+  /// keyframe's labels); beyond it the oldest are dropped as for keepFrames. At least 1 MiB
+  /// (the constructor throws tv::Error below that); default 256 MiB. A receiver's memory is
+  /// bounded by this plus one chunk being read (maxChunk).
   std::uint64_t keepBytes = std::uint64_t{256} << 20;
-  /// A chunk longer than this is refused as hostile (default 64 MiB; at most 2^30).
+  /// Bytes: a chunk longer than this is refused as hostile and its game disconnected. Range
+  /// [64, 2^30] (the constructor throws tv::Error outside it); default 64 MiB.
   std::uint32_t maxChunk = std::uint32_t{64} << 20;
   /// A peer that has begun its hello, its header or a chunk and then sends nothing for this
-  /// many seconds is dropped (default 10). A game between frames — paused, or in a menu — may
-  /// be silent as long as it likes.
+  /// many seconds is dropped (range (0, 3600], default 10; the constructor throws tv::Error
+  /// outside it). A game between frames — paused, or in a menu — may be silent as long as it
+  /// likes.
   double stallSeconds = 10.0;
-  /// The cell budget of the world the stream describes (ReplayOptions::maxCells).
+  /// The cell budget of the world the stream describes (ReplayOptions::maxCells): a call that
+  /// would visit more cells of the spatial hash is refused as hostile. Default 2^22.
   std::uint64_t maxCells = std::uint64_t{1} << 22;
   /// Also write each run whole, as it arrives, to this file (flushed per frame): run 1 to it,
-  /// run n > 1 to the same name with "-n" before the extension. Empty: none.
+  /// run n > 1 to the same name with "-n" before the extension. Empty (the default): none. A
+  /// file that cannot be written is a `refused` event naming it and the run is not saved; the
+  /// receiving goes on.
   std::string saveTo;
-  /// End each run after this many frames (0: never): the receiver disconnects the game then,
-  /// and its saved file ends there as a closed recording.
+  /// End each run after this many frames (0, the default: never): the receiver disconnects the
+  /// game then, and its saved file ends there as a closed recording.
   std::uint64_t stopAfterFrames = 0;
 };
 
 /// One whole frame as it arrived, checked (checksum, structure, every call decoded).
 struct LiveFrame {
-  std::uint64_t run = 0;
+  std::uint64_t run = 0;     ///< the run it belongs to: 1 for the first game that connected
   std::uint64_t number = 0;  ///< its number in the run: 0 is the first frame received
+  /// It opens with a whole-world snapshot (the first frame of a run always does), so that a
+  /// recording can begin here.
   bool keyframe = false;
-  std::uint32_t calls = 0;
+  std::uint32_t calls = 0;  ///< the calls it holds, labels included (not the snapshot)
+  /// Moves among them: World::move and Mover::move calls, and each body of a Batch::step.
   std::uint64_t moves = 0;
   /// The chunk as a file holds it: 8-byte head (length, CRC-32) and payload.
   std::vector<std::uint8_t> chunk;
   /// For a keyframe: label calls of the items then in the world, which a recording that
-  /// begins here repeats (LiveReceiver::file), and where in the payload its calls begin.
+  /// begins here repeats (LiveReceiver::file); empty for other frames.
   std::vector<std::uint8_t> labels;
+  /// For a keyframe: the offset in the payload (bytes after the 8-byte head) where the
+  /// snapshot ends and its calls begin; 0 for other frames.
   std::uint32_t keyframeEnd = 0;
 };
 
+/// Something that happened to a receiver, for its user (LiveReceiver::poll).
 struct LiveEvent {
+  /// What happened.
   enum class Kind : std::uint8_t {
     connected,  ///< a game connected: a new run
     frames,     ///< frames arrived (`frame`: the newest, `count`: how many since the last poll)
@@ -137,20 +155,20 @@ struct LiveEvent {
     refused,    ///< a peer was refused: hostile bytes, a stall, a second game, ...
     control,    ///< a pause, step or resume was sent or could not be
   };
-  Kind kind = Kind::frames;
-  std::uint64_t run = 0;
-  std::uint64_t frame = 0;
-  std::uint64_t count = 0;
+  Kind kind = Kind::frames;  ///< what happened
+  std::uint64_t run = 0;     ///< the run it concerns (1 for the first game; 0 before any)
+  std::uint64_t frame = 0;   ///< a frame number in that run, where `kind` says which
+  std::uint64_t count = 0;   ///< frames, where `kind` says what they count
   std::string text;  ///< for people: "game 127.0.0.1:53122 connected (pause and step: yes)"
 };
 
 /// What is kept of the current run (or the last one), from a frame on.
 struct LiveWindow {
   std::uint64_t run = 0;  ///< 0: no game has connected yet
-  bool connected = false;
+  bool connected = false;     ///< the run's game is connected still
   bool controllable = false;  ///< the game accepts pause and step
   bool closed = false;        ///< the game ended its recording (the end mark came)
-  std::string peer;
+  std::string peer;           ///< the game's address, "127.0.0.1:53122"; empty before any run
   std::array<std::uint8_t, 32> header{};  ///< the run's file header
   std::uint64_t firstKept = 0;            ///< number of the oldest frame kept
   std::uint64_t nextFrame = 0;            ///< number the next frame will have
@@ -160,6 +178,8 @@ struct LiveWindow {
   std::vector<std::shared_ptr<const LiveFrame>> frames;
 };
 
+/// Listens for one game's live stream at a time, on a thread of its own, and keeps the newest
+/// frames of it within bounds (see the file's overview).
 class LiveReceiver {
  public:
   /// Listens at options.address. Throws tv::Error when the address is malformed or taken
@@ -170,6 +190,7 @@ class LiveReceiver {
   LiveReceiver(const LiveReceiver&) = delete;
   LiveReceiver& operator=(const LiveReceiver&) = delete;
 
+  /// The port it listens on: the one asked for, or the one the system gave for port 0.
   [[nodiscard]] std::uint16_t port() const;
   [[nodiscard]] std::string address() const;  ///< "127.0.0.1:7720", with the port given
 
@@ -185,16 +206,19 @@ class LiveReceiver {
   /// (renumbered from 0, that keyframe's labels after it), the end mark if the game closed its
   /// recording. Throws tv::Error when no game has connected or no keyframe is kept.
   [[nodiscard]] std::vector<std::uint8_t> file() const;
-  /// Back channel: the game stops at its next frame mark, lets one more frame pass and stops
-  /// again, or goes on. False (and a `control` event saying why) when no game is connected or
-  /// the connected one does not accept control.
+  /// Back channel: the game stops at its next frame mark and waits there. Returns false (and
+  /// a `control` event saying why) when no game is connected or the connected one does not
+  /// accept control (LiveOptions::control); true once the request is queued to be sent.
   bool pause();
+  /// Lets a paused game play one more frame, then it stops again at its next frame mark.
+  /// Returns false, with a `control` event, as pause() does.
   bool step();
+  /// Lets a paused game go on. Returns false, with a `control` event, as pause() does.
   bool resume();
   /// Drops the connected game (it will reconnect as a new run, if it still wants to).
   void disconnect();
 
-  struct Impl;
+  struct Impl;  ///< its state and thread (core/record/src/live_receiver.cpp)
 
  private:
   std::unique_ptr<Impl> impl_;

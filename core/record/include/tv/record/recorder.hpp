@@ -105,7 +105,8 @@ class Recorder final : public WorldObserver {
   /// Frames handed over so far (each frame() or FixedStep advance; close() hands over the last).
   [[nodiscard]] std::uint64_t frames() const { return frames_; }
   [[nodiscard]] std::uint64_t calls() const { return calls_; }  ///< calls recorded so far
-  /// Moves recorded so far (World::move, check, project, Mover::move; a Batch::step's bodies).
+  /// Moves recorded so far: World::move and Mover::move calls, and each body of a Batch::step
+  /// (checks and projections are calls, not moves).
   [[nodiscard]] std::uint64_t moves() const { return moves_; }
   /// Bytes written of the frames handed over (waits for the writer); the file size once closed.
   [[nodiscard]] std::uint64_t size() const;
