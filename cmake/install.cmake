@@ -26,6 +26,9 @@ if(TARGET tv_record)
   list(APPEND tv_header_dirs core/record/include)
   string(PREPEND tv_pc_libs "-ltv_record ")
   set(tv_pc_libs_private "-pthread")  # the recorder's writer thread
+  if(WIN32)
+    string(APPEND tv_pc_libs_private " -lws2_32")  # the live stream's sockets
+  endif()
   set(tv_pc_private "zlib")  # its file checksums (CRC-32)
 endif()
 if(TARGET tv_level)

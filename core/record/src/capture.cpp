@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "crash_flush.hpp"
+
 namespace tv::rec {
 
 namespace {
@@ -102,6 +104,7 @@ void Pipe::stop() {
 }
 
 void Pipe::run() {
+  systemId_.store(systemThreadId(), std::memory_order_release);
   std::unique_lock lock(m_);
   for (;;) {
     work_.wait(lock, [&] { return !full_.empty() || stopping_; });

@@ -193,6 +193,9 @@ class Pipe {
   [[nodiscard]] std::uint64_t stalls() const { return stalls_; }
   // The writer's thread, for the crash flush (it must not wait for itself).
   [[nodiscard]] std::thread::id writerThread() const { return writerId_; }
+  // The system's id of the writer's thread once it runs (0 before, and on POSIX systems): on
+  // Windows the crash flush asks whether it still runs (crash_flush.hpp).
+  [[nodiscard]] const std::atomic<std::uint32_t>& writerSystemId() const { return systemId_; }
 
  private:
   void nextBlock(std::size_t bytes);
@@ -213,6 +216,7 @@ class Pipe {
   std::uint64_t stalls_ = 0;
   std::thread thread_;
   std::thread::id writerId_;
+  std::atomic<std::uint32_t> systemId_{0};
 };
 
 }  // namespace tv::rec

@@ -5,9 +5,6 @@
 // Index: [SECTION] state · [SECTION] the UI's side · [SECTION] the stream ·
 //        [SECTION] the connection
 
-#include <poll.h>
-#include <sys/socket.h>
-
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
@@ -381,7 +378,9 @@ void LiveReceiver::Impl::closeSave(bool endMark) {
 
 void LiveReceiver::Impl::loop() {
   while (!stopping.load(std::memory_order_acquire)) {
-    pollfd fds[3] = {{waker.fd(), POLLIN, 0}, {listener.get(), POLLIN, 0}, {-1, POLLIN, 0}};
+    rec::net::Watch fds[3] = {{waker.fd(), rec::net::kIn},
+                              {listener.get(), rec::net::kIn},
+                              {rec::net::kNoSocket, rec::net::kIn}};
     int timeout = -1;
     if (conn) {
       fds[2].fd = conn.get();
@@ -391,9 +390,9 @@ void LiveReceiver::Impl::loop() {
             0, static_cast<int>((lastByte + options.stallSeconds - rec::net::now()) * 1000) + 1);
       }
       std::lock_guard lock(m);
-      if (!outbox.empty()) fds[2].events |= POLLOUT;
+      if (!outbox.empty()) fds[2].events |= rec::net::kOut;
     }
-    ::poll(fds, 3, timeout);
+    rec::net::wait(fds, 3, timeout);
     if (fds[0].revents) waker.drain();
     if (stopping.load(std::memory_order_acquire)) break;
     bool drop;
@@ -404,7 +403,7 @@ void LiveReceiver::Impl::loop() {
     }
     if (conn && drop) endRun("stopped receiving (asked)", true);
     if (fds[1].revents) accept();
-    if (conn && (fds[2].revents & (POLLIN | POLLHUP | POLLERR))) read();
+    if (conn && (fds[2].revents & (rec::net::kIn | rec::net::kHangUp | rec::net::kError))) read();
     if (conn) sendCommands();
     if (conn && !reader->ended() && (reader->midItem() || reader->frames() == 0) &&
         rec::net::now() - lastByte > options.stallSeconds) {
@@ -419,7 +418,7 @@ void LiveReceiver::Impl::loop() {
 
 void LiveReceiver::Impl::accept() {
   for (;;) {
-    rec::net::Fd c(::accept(listener.get(), nullptr, nullptr));
+    rec::net::Fd c = rec::net::acceptNext(listener.get());
     if (!c) return;
     const std::string who = rec::net::peerName(c.get());
     if (conn) {

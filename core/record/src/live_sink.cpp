@@ -5,8 +5,6 @@
 
 #include "live_sink.hpp"
 
-#include <poll.h>
-#include <sys/socket.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -163,8 +161,8 @@ void LiveSink::run() {
         tryConnect();
         continue;
       }
-      pollfd w{waker_.fd(), POLLIN, 0};
-      poll(&w, 1, static_cast<int>(std::ceil((nextTry_ - t) * 1000)));
+      net::Watch w{waker_.fd(), net::kIn};
+      net::wait(&w, 1, static_cast<int>(std::ceil((nextTry_ - t) * 1000)));
       waker_.drain();
       continue;
     }
@@ -179,12 +177,12 @@ void LiveSink::run() {
                  " behind (the game goes on, and connects again)");
       continue;
     }
-    pollfd fds[2] = {{sock_.get(), static_cast<short>(POLLIN | (wantWrite ? POLLOUT : 0)), 0},
-                     {waker_.fd(), POLLIN, 0}};
-    if (connecting_) fds[0].events = POLLOUT;
+    net::Watch fds[2] = {{sock_.get(), static_cast<short>(net::kIn | (wantWrite ? net::kOut : 0))},
+                         {waker_.fd(), net::kIn}};
+    if (connecting_) fds[0].events = net::kOut;
     int timeout = -1;
     if (connecting_ || !replied_) timeout = std::max(0, static_cast<int>((deadline_ - t) * 1000));
-    poll(fds, 2, timeout);
+    net::wait(fds, 2, timeout);
     if (fds[1].revents) waker_.drain();
     if (connecting_) {
       if (fds[0].revents) {
@@ -214,7 +212,7 @@ void LiveSink::run() {
       }
       continue;
     }
-    if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) readCommands();
+    if (fds[0].revents & (net::kIn | net::kHangUp | net::kError)) readCommands();
     if (sock_ && !sendQueued()) continue;
     if (sock_ && !replied_ && net::now() >= deadline_) {
       disconnect(addressText_ + " did not answer as a tunnelvision receiver within " +
@@ -231,21 +229,21 @@ void LiveSink::run() {
         empty = queue_.empty();
       }
       if (empty || !sendQueued() || net::now() >= until) break;
-      pollfd p{sock_.get(), POLLOUT, 0};
-      poll(&p, 1, 50);
+      net::Watch p{sock_.get(), net::kOut};
+      net::wait(&p, 1, 50);
     }
   }
   if (sock_ && !connecting_) {
     // A graceful end: no more to send (FIN after the data), then what the receiver still says
     // is read until it closes too. Closing with unread bytes would reset the connection, and a
     // reset can throw away the last frames before the receiver has read them.
-    ::shutdown(sock_.get(), SHUT_WR);
+    net::shutdownSend(sock_.get());
     const double until = net::now() + kFlushOnStop;
     std::uint8_t buf[256];
     std::string why;
     while (net::now() < until) {
-      pollfd p{sock_.get(), POLLIN, 0};
-      poll(&p, 1, 50);
+      net::Watch p{sock_.get(), net::kIn};
+      net::wait(&p, 1, 50);
       if (net::recvSome(sock_.get(), buf, sizeof buf, why) < 0) break;
     }
   }
@@ -364,7 +362,7 @@ bool LiveSink::sendQueued() {
       disconnect(why);
       return false;
     }
-    if (n == 0) return true;  // the socket is full: poll() says when to go on
+    if (n == 0) return true;  // the socket is full: wait() says when to go on
     sentOfFront_ += static_cast<std::size_t>(n);
     if (sentOfFront_ == front->size()) {
       std::lock_guard lock(m_);

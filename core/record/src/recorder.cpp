@@ -78,6 +78,7 @@ struct Recorder::Impl {
     if (file && options.flushOnCrash) {
       crash.written = &writer->framesWritten();
       crash.writer = pipe->writerThread();
+      crash.writerSystemId = &pipe->writerSystemId();
       rec::watchForCrash(&crash);
       watched = true;
     }

@@ -17,8 +17,9 @@
 /// recorder's own encodes them, checksums each frame and writes it (flushed) once the frame is
 /// handed over — at `frame()`, or a FixedStep's advance. So the file of a game that crashed
 /// replays up to its last whole frame handed over: when a file recorder is open, a fatal signal
-/// (SIGSEGV, SIGABRT, ...), std::terminate or exit() first waits (at most a few seconds) for the
-/// writer to write what it was given (see RecorderOptions::flushOnCrash for what is covered).
+/// (SIGSEGV, SIGABRT, ...), an unhandled fault on Windows, std::terminate or exit() first waits
+/// (at most a few seconds) for the writer to write what it was given (see
+/// RecorderOptions::flushOnCrash for what is covered on each system).
 /// An I/O error mid-game (disk full) stops the recording — `ok()` turns false and `error()` says
 /// why, once the writer has met it — and the game goes on.
 
@@ -49,11 +50,21 @@ struct RecorderOptions {
   /// game that makes calls faster than they can be written waits at this bound rather than
   /// fill memory (`stalls()` counts the waits).
   std::size_t maxQueueBytes = std::size_t{64} << 20;
-  /// For a recorder writing a file: a fatal signal (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT,
-  /// SIGINT, SIGTERM, SIGHUP — each only where the game left the default action), an uncaught
-  /// exception (std::terminate) or exit() waits up to 2 s (exit: 5 s) for the writer to write
-  /// every frame handed over, then the process ends as it would have. Not covered: SIGKILL,
-  /// _exit, a crash of the writer's own thread, the frame being played, the end mark.
+  /// For a recorder writing a file: when the game dies, first wait up to 2 s (exit(): 5 s) for
+  /// the writer to write every frame handed over, then let the process end as it would have.
+  /// The handlers are in place only while such a recorder is open. What is covered:
+  /// - POSIX systems: the fatal signals SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGINT,
+  ///   SIGTERM, SIGHUP (each only where the game left the default action: a game's own
+  ///   handler, or a sanitizer's, is left alone); std::terminate (an uncaught exception);
+  ///   exit().
+  /// - Windows: the C runtime's signals SIGSEGV, SIGFPE, SIGILL, SIGABRT, SIGINT, SIGTERM (each
+  ///   only where its handler was SIG_DFL); faults that reach no handler — an access violation,
+  ///   a stack overflow, in any thread or DLL — through SetUnhandledExceptionFilter (not under
+  ///   a debugger, nor when the game sets a filter of its own later); a console closed, a
+  ///   log-off, a shutdown; std::terminate; exit(), except in a DLL (the Lua module), whose exit
+  ///   handlers run after Windows has ended the writer's thread: close the recorder first.
+  /// - Nowhere: SIGKILL or TerminateProcess, _exit, a crash of the writer's own thread, the
+  ///   frame being played, the end mark.
   bool flushOnCrash = true;
 };
 
