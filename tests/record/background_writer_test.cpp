@@ -4,7 +4,9 @@
 //   - a game faster than its writer waits at the queue's bound instead of filling memory;
 //   - a game that dies — a fault, abort, an uncaught exception, exit() — leaves every frame it
 //     handed over in the file (and the negative control: without the crash flush, a frame handed
-//     over a moment before the crash is lost).
+//     over a moment before the crash is lost);
+//   - the crash handlers are there only while a file recorder is open, and a handler the game
+//     sets meanwhile is its own afterwards.
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -236,6 +238,51 @@ TEST(CrashFlush, NegativeControlWithoutTheFlushTheFramesStillBeingWrittenAreLost
   const int status = recordThenDie(disk, false, [] { std::abort(); });
   ASSERT_TRUE(WIFSIGNALED(status));
   EXPECT_LT(framesIn(disk.bytes()), 5u);
+}
+
+// What SIGHUP does now (the signal a sanitizer leaves alone): the default, or a handler.
+void (*hangUpHandler())(int) {
+  struct sigaction now {};
+  sigaction(SIGHUP, nullptr, &now);
+  return now.sa_handler;
+}
+
+void gamesOwnHandler(int) {}
+
+TEST(CrashFlush, TheHandlersAreThereOnlyWhileAFileRecorderIsOpen) {
+  // A handler that stayed after the recorder closed would point into a library that may be
+  // unloaded by then (the Lua module, when its Lua state closes).
+  ASSERT_EQ(hangUpHandler(), SIG_DFL);
+  const std::terminate_handler before = std::get_terminate();
+  const std::string a = ::testing::TempDir() + "watch_a.tvrec";
+  const std::string b = ::testing::TempDir() + "watch_b.tvrec";
+  {
+    tv::Recorder first(a);
+    EXPECT_NE(hangUpHandler(), SIG_DFL);
+    EXPECT_NE(std::get_terminate(), before);
+    {
+      tv::Recorder second(b);
+      EXPECT_NE(hangUpHandler(), SIG_DFL);
+    }
+    EXPECT_NE(hangUpHandler(), SIG_DFL) << "one recorder is still open";
+    first.close();
+    EXPECT_EQ(hangUpHandler(), SIG_DFL);
+  }
+  EXPECT_EQ(hangUpHandler(), SIG_DFL);
+  EXPECT_EQ(std::get_terminate(), before);
+  // A recorder without a file has nothing to flush: it installs nothing.
+  tv::Recorder memory;
+  EXPECT_EQ(hangUpHandler(), SIG_DFL);
+}
+
+TEST(CrashFlush, AHandlerTheGameSetsWhileRecordingIsItsOwnAfterwards) {
+  ASSERT_EQ(hangUpHandler(), SIG_DFL);
+  {
+    tv::Recorder rec(::testing::TempDir() + "watch_own.tvrec");
+    std::signal(SIGHUP, &gamesOwnHandler);
+  }
+  EXPECT_EQ(hangUpHandler(), &gamesOwnHandler);
+  std::signal(SIGHUP, SIG_DFL);
 }
 
 }  // namespace
