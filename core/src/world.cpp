@@ -660,6 +660,7 @@ MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& 
   const Slot& s = slot(id, "tv::World::check");
   validateGoal(s.rect, goal, "tv::World::check");
   validateOptions(options, "tv::World::check");
+  if (options.semantics == MoveSemantics::bump) return bumpRun(id.index, s.rect, goal, filter, options);
   return run(id, s.rect, goal, filter, options);
 }
 
@@ -673,6 +674,11 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
   const Slot& s = slot(id, kMove);
   validateGoal(s.rect, goal, kMove);
   validateOptions(options, kMove);
+  if (options.semantics == MoveSemantics::bump) {
+    const MoveResult result = bumpRun(id.index, s.rect, goal, filter, options);
+    place(id.index, s.rect.at(result.position));
+    return result;
+  }
   const Rect from = s.rect;
   const MoveResult result = run(id, from, goal, filter, options);
   const Rect to = from.at(result.position);
@@ -697,6 +703,7 @@ MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
   validateRect(r, "tv::World::project");
   validateGoal(r, goal, "tv::World::project");
   validateOptions(options, "tv::World::project");
+  if (options.semantics == MoveSemantics::bump) return bumpRun(ItemId::kNone, r, goal, filter, options);
   return run(ItemId{}, r, goal, filter, options);
 }
 
