@@ -22,7 +22,8 @@ SpatialHash::SpatialHash(const SpatialHash& other)
       buffers_(other.buffers_),
       occupied_(other.occupied_),
       box_(other.box_),
-      freedSinceBox_(other.freedSinceBox_) {
+      onSide_{other.onSide_[0], other.onSide_[1], other.onSide_[2], other.onSide_[3]},
+      boxStale_(other.boxStale_) {
   // Vectors copy their sizes, not their capacities, and the buffer pools trade by capacity.
   for (std::size_t k = 0; k < cells_.size(); ++k) cells_[k].reserve(other.cells_[k].capacity());
   for (std::size_t p = 0; p < spares_.size(); ++p) {
@@ -258,9 +259,7 @@ std::uint32_t SpatialHash::cellFor(Cell c) {
   table_[i] = {c, cells_[k].data(), 0, k};
   bucketOf_[k] = static_cast<std::uint32_t>(i);
   ++occupied_;
-  box_ = box_.empty() ? CellRange{c.x, c.y, c.x, c.y}
-                      : CellRange{std::min(box_.x0, c.x), std::min(box_.y0, c.y),
-                                  std::max(box_.x1, c.x), std::max(box_.y1, c.y)};
+  boxGains(c);
   return k;
 }
 
@@ -281,19 +280,60 @@ void SpatialHash::freeCell(std::uint32_t k) {
   table_[hole] = Bucket{};
   freeCells_.push_back(k);
   --occupied_;
-  // The box of occupied cells is recomputed once as many cells have emptied as half the cell
-  // storage: amortized O(1) a freed cell, and the box never stays loose for long.
-  if (++freedSinceBox_ > keys_.size() / 2 + 8) recomputeBox();
+  boxLoses(keys_[k]);
 }
 
-void SpatialHash::recomputeBox() {
-  freedSinceBox_ = 0;
+// A new occupied cell: the box grows to hold it, and a side it lies on counts it.
+void SpatialHash::boxGains(Cell c) {
+  if (boxStale_) return;  // found again, counts and all, when next read
+  if (box_.empty()) {
+    box_ = {c.x, c.y, c.x, c.y};
+    onSide_[0] = onSide_[1] = onSide_[2] = onSide_[3] = 1;
+    return;
+  }
+  // A cell beyond a side makes a new side holding it alone.
+  if (c.x < box_.x0) box_.x0 = c.x, onSide_[0] = 0;
+  if (c.x > box_.x1) box_.x1 = c.x, onSide_[1] = 0;
+  if (c.y < box_.y0) box_.y0 = c.y, onSide_[2] = 0;
+  if (c.y > box_.y1) box_.y1 = c.y, onSide_[3] = 0;
+  onSide_[0] += c.x == box_.x0;
+  onSide_[1] += c.x == box_.x1;
+  onSide_[2] += c.y == box_.y0;
+  onSide_[3] += c.y == box_.y1;
+}
+
+// An occupied cell emptied: a side left with no occupied cell means the box is too large, and
+// the next read finds it again (a crowd's cells empty all the time, a side rarely).
+void SpatialHash::boxLoses(Cell c) {
+  if (boxStale_) return;
+  bool emptied = false;
+  if (c.x == box_.x0) emptied |= --onSide_[0] == 0;
+  if (c.x == box_.x1) emptied |= --onSide_[1] == 0;
+  if (c.y == box_.y0) emptied |= --onSide_[2] == 0;
+  if (c.y == box_.y1) emptied |= --onSide_[3] == 0;
+  if (emptied) boxStale_ = true;
+}
+
+void SpatialHash::recomputeBox() const {
+  boxStale_ = false;
   box_ = CellRange{};
-  forEachOccupiedCell([&](Cell c, std::size_t) {
-    box_ = box_.empty() ? CellRange{c.x, c.y, c.x, c.y}
-                        : CellRange{std::min(box_.x0, c.x), std::min(box_.y0, c.y),
-                                    std::max(box_.x1, c.x), std::max(box_.y1, c.y)};
-  });
+  for (std::size_t k = 0; k < keys_.size(); ++k) {
+    if (cells_[k].empty()) continue;
+    const Cell c = keys_[k];
+    if (box_.empty()) {
+      box_ = {c.x, c.y, c.x, c.y};
+      onSide_[0] = onSide_[1] = onSide_[2] = onSide_[3] = 0;
+    } else {
+      if (c.x < box_.x0) box_.x0 = c.x, onSide_[0] = 0;
+      if (c.x > box_.x1) box_.x1 = c.x, onSide_[1] = 0;
+      if (c.y < box_.y0) box_.y0 = c.y, onSide_[2] = 0;
+      if (c.y > box_.y1) box_.y1 = c.y, onSide_[3] = 0;
+    }
+    onSide_[0] += c.x == box_.x0;
+    onSide_[1] += c.x == box_.x1;
+    onSide_[2] += c.y == box_.y0;
+    onSide_[3] += c.y == box_.y1;
+  }
 }
 
 void SpatialHash::growTable() {

@@ -13,8 +13,9 @@
 // - Cells are recycled: a cell that empties leaves the table, its storage (and its entry
 //   buffer) is taken by the next new cell, so memory follows the cells occupied *now*, not
 //   every cell ever visited. The box that holds every occupied cell (which clips the walks of
-//   long moves) is recomputed as cells empty, so the cost of a move does not depend on where
-//   items used to be.
+//   long moves) is exact whenever it is read: it counts the occupied cells on each of its four
+//   sides, and a side left empty makes the next read find the box again. So the cost of a move
+//   does not depend on where items used to be.
 
 #include <algorithm>
 #include <cstddef>
@@ -94,8 +95,9 @@ class SpatialHash {
 
   /// The part of `cells` that can hold items: nothing lies outside liveBox().
   [[nodiscard]] CellRange live(const CellRange& cells) const {
-    return {std::max(cells.x0, box_.x0), std::max(cells.y0, box_.y0), std::min(cells.x1, box_.x1),
-            std::min(cells.y1, box_.y1)};
+    const CellRange& b = liveBox();
+    return {std::max(cells.x0, b.x0), std::max(cells.y0, b.y0), std::min(cells.x1, b.x1),
+            std::min(cells.y1, b.y1)};
   }
   /// Calls f(const HashEntry&) for the entries of every cell of `cells`, row by row, until f
   /// returns true; returns whether one did. An item in several of them is met once in each.
@@ -113,9 +115,13 @@ class SpatialHash {
     const Bucket& b = find(c);
     return {b.data, b.size};
   }
-  /// A box holding every occupied cell (empty when there is none). It may be looser than the
-  /// tightest box for a while after cells empty, never by more than half the cells ever held.
-  [[nodiscard]] const CellRange& liveBox() const { return box_; }
+  /// The smallest box holding every occupied cell (empty when there is none). Found again here
+  /// when a side of the last one was left empty: one pass over the cell storage, paid by the
+  /// first read after the occupied cells really shrank, not by every read.
+  [[nodiscard]] const CellRange& liveBox() const {
+    if (boxStale_) [[unlikely]] recomputeBox();
+    return box_;
+  }
   [[nodiscard]] std::size_t occupiedCells() const { return occupied_; }
   /// Bytes held on the heap (capacities, not sizes).
   [[nodiscard]] std::size_t memoryBytes() const;
@@ -181,7 +187,9 @@ class SpatialHash {
   void repoint(std::uint32_t slot, std::uint32_t k, std::uint32_t at);
   void regrow(std::vector<HashEntry>& items, std::size_t capacity);
   void reservePools(std::size_t pool);
-  void recomputeBox();
+  void recomputeBox() const;
+  void boxGains(Cell c);
+  void boxLoses(Cell c);
 
   Grid grid_;
   std::vector<Bucket> table_;
@@ -195,8 +203,11 @@ class SpatialHash {
   std::vector<std::vector<std::vector<HashEntry>>> spares_;  // [log2 capacity]: buffers to trade
   std::vector<std::size_t> buffers_;  // [log2 capacity]: buffers made, in cells or spare
   std::size_t occupied_ = 0;
-  CellRange box_;
-  std::size_t freedSinceBox_ = 0;
+  // The box of occupied cells, and how many occupied cells lie on each of its sides (left,
+  // right, top, bottom); stale when a side's count fell to zero (then the counts are too).
+  mutable CellRange box_;
+  mutable std::size_t onSide_[4] = {};
+  mutable bool boxStale_ = false;
 };
 
 }  // namespace tv::detail

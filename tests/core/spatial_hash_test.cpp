@@ -329,9 +329,56 @@ TEST(SpatialHash, TheBoxOfOccupiedCellsShrinksWhenItemsLeave) {
   h.update(1, {1e6, 1e6, 8, 8});
   EXPECT_TRUE(h.liveBox().contains(h.grid().cellAt({1e6, 1e6})));
   h.update(1, {32, 0, 8, 8});
-  // Tightened once enough cells emptied (amortized): a few more moves in place do it.
-  for (int i = 0; i < 64; ++i) h.update(1, {32.0 + 16 * (i % 2), 0, 8, 8});
+  // Tight at once: the box's far sides were left empty, so the read finds it again.
+  EXPECT_EQ(h.liveBox(), (CellRange{0, 0, 2, 0}));
+  h.update(1, {48, 0, 8, 8});
   EXPECT_EQ(h.liveBox(), (CellRange{0, 0, 3, 0}));
+  h.erase(1);
+  EXPECT_EQ(h.liveBox(), (CellRange{0, 0, 0, 0}));
+  h.erase(0);
+  EXPECT_TRUE(h.liveBox().empty());
+}
+
+TEST(SpatialHash, TheBoxIsTheTightestAfterEveryStepOfARandomWalk) {
+  // Items appear, move (by short steps and by jumps) and vanish; after every step the box is
+  // exactly the one that holds the occupied cells — which a copy made then agrees with.
+  SpatialHash h(8);
+  std::uint64_t state = 12345;
+  const auto next = [&](int n) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(n));
+  };
+  std::map<std::uint32_t, Rect> items;
+  for (int step = 0; step < 20000; ++step) {
+    const auto slot = static_cast<std::uint32_t>(next(24));
+    const bool far = next(50) == 0;
+    const Rect r{static_cast<double>(next(far ? 4000 : 64) - (far ? 2000 : 32)),
+                 static_cast<double>(next(far ? 4000 : 64) - (far ? 2000 : 32)),
+                 1.0 + next(12), 1.0 + next(12)};
+    if (!items.contains(slot)) {
+      h.insert(slot, slot * 7u, r);
+      items[slot] = r;
+    } else if (next(8) == 0) {
+      h.erase(slot);
+      items.erase(slot);
+    } else {
+      h.update(slot, r);
+      items[slot] = r;
+    }
+    CellRange want;
+    for (const auto& [s, rect] : items) {
+      const CellRange c = h.grid().cellsHolding(rect);
+      want = want.empty() ? c
+                          : CellRange{std::min(want.x0, c.x0), std::min(want.y0, c.y0),
+                                      std::max(want.x1, c.x1), std::max(want.y1, c.y1)};
+    }
+    if (want.empty()) {
+      ASSERT_TRUE(h.liveBox().empty()) << "step " << step;
+    } else {
+      ASSERT_EQ(h.liveBox(), want) << "step " << step;
+    }
+  }
+  expectMatches(h, items);
 }
 
 }  // namespace
@@ -359,6 +406,42 @@ TEST(WorldCells, ALongMoveCostsTheSameAfterAnItemVisitedFarAway) {
   if constexpr (!kTraceCompiledIn) GTEST_SKIP() << "tracing compiled out";
   EXPECT_EQ(cellsRead(true), cellsRead(false));
   EXPECT_LT(cellsRead(true), 16u);
+}
+
+// The case as a user met it: World w(1.0), two 4×4 items, a check from (0, 0) to (3000, 2000).
+// The second item then visits (1e6, 1e6) and comes straight back; the same check reads the same
+// cells, with no other move in between.
+//
+//   (0,0) ■ mover ─────────────────────────────────► (3000, 2000)
+//         ■ other ···· trip to (1e6, 1e6) and back ····
+TEST(WorldCells, ALongCheckReadsTheSameCellsBeforeAndAfterAFarTripWithNoMoveBetween) {
+  if constexpr (!kTraceCompiledIn) GTEST_SKIP() << "tracing compiled out";
+  World w(1.0);
+  const ItemId mover = w.add({0, 0, 4, 4});
+  const ItemId other = w.add({10, 10, 4, 4});
+  const auto cellsRead = [&] {
+    MoveTrace t;
+    MoveOptions o;
+    o.trace = &t;
+    (void)w.check(mover, {3000, 2000}, {}, o);
+    return t.cells.size();
+  };
+  const std::size_t before = cellsRead();
+  w.update(other, Vec2{1e6, 1e6});
+  w.update(other, Vec2{10, 10});
+  const std::size_t after = cellsRead();
+  EXPECT_EQ(after, before);
+  EXPECT_LT(before, 200u);
+
+  // Negative control: the walk clipped by a box that still spans the trip (as the box was, when
+  // it was recomputed only after keys/2 + 8 cells had emptied) reads hundreds of times more.
+  const Grid g(1.0);
+  const CellRange near = g.cellsOf({0, 0, 14, 14});
+  const CellRange stale{near.x0, near.y0, g.cellAt({1e6 + 4, 1e6 + 4}).x,
+                        g.cellAt({1e6 + 4, 1e6 + 4}).y};
+  std::size_t staleCells = 0;
+  g.forEachSweptCell({0, 0, 4, 4}, {3000, 2000}, [&](Cell) { ++staleCells; }, stale);
+  EXPECT_GT(staleCells, 100 * before);
 }
 
 TEST(WorldCells, MemoryReturnsToBaselineAfterABodyCrossesAMillionEmptyCells) {
