@@ -263,6 +263,67 @@ TEST(NoAllocation, ACrowdStopsAllocatingAfterAFewHundredTicks) {
   expectBusyAndContained(crowd);
 }
 
+// The exact condition (README, "No allocation"): a move allocates only at a new high of cells
+// crowded at once. Two groups of five 4x4 bodies live one to a cell, and gather in a 32 px cell
+// of their own:
+//
+//   home row:  [b][b][b][b][b]   [b][b][b][b][b]      one body a cell
+//   gathering:       [bbbbb]           [bbbbb]        cell A (group 0), cell B (group 1)
+//
+// Taking turns (one cell crowded at a time) allocates nothing for 2000 rounds once one round
+// was made; gathering both at once is a new high and allocates (the negative control of the
+// claim without its condition); from then on, gathering both at once allocates nothing either.
+TEST(NoAllocation, OnlyANewHighOfCellsCrowdedAtOnceAllocates) {
+  World w(32);
+  const tv::Filter none = tv::Filter::all(response::ignore);
+  std::vector<ItemId> group[2];
+  std::vector<Vec2> home[2], gathered[2];
+  for (std::size_t g = 0; g < 2; ++g) {
+    for (int i = 0; i < 5; ++i) {
+      const double x0 = static_cast<double>(g) * 640.0;
+      home[g].push_back({x0 + i * 64.0 + 8, 8});
+      gathered[g].push_back({x0 + 128 + 2 + i * 5.0, 200});  // all in one 32 px cell
+      group[g].push_back(w.add({home[g].back().x, home[g].back().y, 4, 4}));
+    }
+  }
+  const auto go = [&](std::size_t g, const std::vector<Vec2>* where) {
+    for (std::size_t i = 0; i < 5; ++i) (void)w.move(group[g][i], where[g][i], none);
+  };
+  const auto takeTurns = [&] {
+    for (std::size_t g = 0; g < 2; ++g) {
+      go(g, gathered);
+      go(g, home);
+    }
+  };
+  const auto gatherBoth = [&] {
+    go(0, gathered);
+    go(1, gathered);
+    go(0, home);
+    go(1, home);
+  };
+  takeTurns();  // warm up: one cell crowded to five at a time
+  long turns = 0, firstTogether = 0, together = 0;
+  {
+    CountAllocations c;
+    for (int round = 0; round < 2000; ++round) takeTurns();
+    turns = c.count();
+  }
+  {
+    CountAllocations c;
+    gatherBoth();
+    firstTogether = c.count();
+  }
+  {
+    CountAllocations c;
+    for (int round = 0; round < 2000; ++round) gatherBoth();
+    together = c.count();
+  }
+  EXPECT_EQ(turns, 0);
+  EXPECT_GT(firstTogether, 0);  // two cells crowded at once: more than ever before
+  EXPECT_EQ(together, 0);
+  EXPECT_EQ(w.rect(group[1][4]).position(), home[1][4]);
+}
+
 TEST(NoAllocation, CheckProjectAndAnyOverlapAllocateNothing) {
   Crowd crowd;
   for (int t = 0; t < 300; ++t) crowd.tick();
