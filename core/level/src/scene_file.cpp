@@ -39,11 +39,12 @@ constexpr std::array<std::pair<std::string_view, sim::BodyRole>, 7> kRoles = {
      {"player", sim::BodyRole::player},
      {"crowd", sim::BodyRole::crowd},
      {"block", sim::BodyRole::block}}};
-constexpr std::array<std::pair<std::string_view, ResponseId>, 4> kResponses = {
-    {{"touch", response::touch},
-     {"cross", response::cross},
-     {"slide", response::slide},
-     {"bounce", response::bounce}}};
+// The built-in responses by name, from the one table of them (tv/response.hpp).
+constexpr auto kResponses = [] {
+  std::array<std::pair<std::string_view, ResponseId>, response::kBuiltinCount> a{};
+  for (ResponseId i = 0; i < response::kBuiltinCount; ++i) a[i] = {kBuiltinResponses[i].name, i};
+  return a;
+}();
 
 template <class T, std::size_t N>
 T byName(const std::array<std::pair<std::string_view, T>, N>& names, const JsonAt& at,

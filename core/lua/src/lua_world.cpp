@@ -396,8 +396,6 @@ int worldToString(lua_State* L) {
   return 1;
 }
 
-const char* const kBuiltinNames[tv::response::kBuiltinCount] = {"touch", "cross", "slide",
-                                                                 "bounce"};
 
 }  // namespace
 
@@ -463,10 +461,11 @@ int newWorld(lua_State* L) {
   lua_rawgeti(L, 4, kNameToId);
   lua_rawgeti(L, 4, kIdToName);
   for (int i = 0; i < tv::response::kBuiltinCount; ++i) {
-    lua_pushstring(L, kBuiltinNames[i]);
+    const std::string_view name = tv::kBuiltinResponses[i].name;
+    lua_pushlstring(L, name.data(), name.size());
     lua_pushnumber(L, i);
     lua_rawset(L, -4);
-    lua_pushstring(L, kBuiltinNames[i]);
+    lua_pushlstring(L, name.data(), name.size());
     lua_rawseti(L, -2, i);
   }
   lua_pop(L, 2);

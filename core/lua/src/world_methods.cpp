@@ -487,9 +487,8 @@ int addResponse(lua_State* L) {
   if (known && id < tv::response::kBuiltinCount && isBuiltinFn && builtin == id) {
     return 0;  // re-adding a built-in under its own name
   }
-  const char* const builtinNames[] = {"touch", "cross", "slide", "bounce"};
   if (known && id >= tv::response::kBuiltinCount && isBuiltinFn &&
-      std::string_view(lua_tostring(L, 2)) == builtinNames[builtin]) {
+      std::string_view(lua_tostring(L, 2)) == tv::kBuiltinResponses[builtin].name) {
     // A built-in given back its own name: the core's built-in again.
     lua_pushvalue(L, 2);
     lua_pushnumber(L, builtin);
