@@ -14,6 +14,8 @@
 
 namespace tv::rec {
 
+static_assert(kCallKindCount <= 16, "a call's kind is the low 4 bits of its first byte");
+
 namespace {
 
 constexpr std::uint8_t kindOf(CallKind k) {
@@ -949,7 +951,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.maxEvents = kDefaultMaxEvents;
   const std::uint8_t kb = in.u8("call kind");
   const std::uint8_t kindBits = kb & 0x0F;
-  if (kindBits > kindOf(CallKind::advance)) {
+  if (kindBits >= kCallKindCount) {
     in.failAt(c.offset, "unknown call kind " + std::to_string(kindBits));
   }
   c.kind = static_cast<CallKind>(kindBits);
