@@ -86,7 +86,7 @@ std::uint32_t bits(const JsonAt& at) {
 
 LevelBody readBody(const JsonAt& at) {
   onlyKeys(at, {"rect", "motion", "velocity", "speed", "direction", "jump", "falls", "response",
-                "role", "layer", "mask", "group", "state", "active"});
+                "role", "layer", "mask", "group", "state", "active", "solid", "oneWay"});
   LevelBody lb;
   sim::Body& b = lb.body;
   b.rect = at["rect"].rect();
@@ -134,6 +134,8 @@ LevelBody readBody(const JsonAt& at) {
   if (auto v = at.find("falls")) b.falls = v->boolean();
   if (auto v = at.find("response")) b.response = byName(kResponses, *v, "response");
   if (auto v = at.find("role")) b.role = byName(kRoles, *v, "role");
+  if (auto v = at.find("solid")) b.solid = v->boolean();
+  if (auto v = at.find("oneWay")) b.oneWay = v->boolean();
   if (auto v = at.find("layer")) b.layer = bits(*v);
   if (auto v = at.find("mask")) b.mask = bits(*v);
   if (auto v = at.find("group")) b.group = bits(*v);
@@ -243,6 +245,9 @@ Json bodyJson(const LevelBody& lb) {
   j["group"] = b.group;
   j["state"] = b.state;
   j["active"] = b.active;
+  // Written only when set, so that files of levels without them read as they always did.
+  if (b.solid) j["solid"] = true;
+  if (b.oneWay) j["oneWay"] = true;
   return j;
 }
 

@@ -74,6 +74,7 @@ const SceneRegistry& builtinScenes() {
     detail::registerProjectileScenes(r);
     detail::registerRestingScenes(r);
     detail::registerGameScenes(r);
+    detail::registerPlatformScenes(r);
     return r;
   }();
   return registry;
