@@ -60,6 +60,7 @@ if cmake --build --preset release --target tv-example-platformer tv-replay >&2; 
   "$build/app/examples/tv-example-platformer" --frames 600 --record out/recordings/platformer.tvrec
   "$build/app/replay/tv-replay" out/recordings/platformer.tvrec
   "$build/app/replay/tv-replay" out/recordings/platformer.tvrec --validate
+  "$build/app/replay/tv-replay" out/recordings/platformer.tvrec --validate --traced
   echo
 fi
 

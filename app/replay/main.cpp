@@ -2,9 +2,11 @@
 // what another mover would have done with the same calls.
 //
 //   tv-replay FILE                      summary, with a full replay and its rate
-//   tv-replay FILE --validate [--allow-truncated]
+//   tv-replay FILE --validate [--traced] [--allow-truncated]
 //                                       exit 1 with the divergence report if it does not replay,
-//                                       or if the file was cut short (a game that crashed)
+//                                       or if the file was cut short (a game that crashed);
+//                                       --traced: every call traced and from every keyframe, as
+//                                       the debugger re-runs them
 //   tv-replay FILE --stats              per item: moves, hits, max speed, moves ending in a solid
 //   tv-replay FILE --what-if NAME [--substep L] [--updates-as-moves] [--far D]
 //                 [--fail-on tunnel,overlap,differ]
@@ -41,7 +43,7 @@ struct FailOn {
 
 struct Options {
   std::string file;
-  bool validate = false, stats = false, updatesAsMoves = false, tolerant = false;
+  bool validate = false, traced = false, stats = false, updatesAsMoves = false, tolerant = false;
   bool allowTruncated = false;
   std::optional<std::string> mover;
   std::optional<double> substep;
@@ -72,7 +74,7 @@ FailOn parseFailOn(std::string_view list) {
 }
 
 constexpr const char* kUsage =
-    "usage: tv-replay FILE [--validate [--allow-truncated] | --stats |\n"
+    "usage: tv-replay FILE [--validate [--traced] [--allow-truncated] | --stats |\n"
     "                       --what-if NAME [--substep L] [--updates-as-moves] [--far D]\n"
     "                                      [--fail-on tunnel,overlap,differ]] [--tolerant]\n"
     "       tv-replay --listen [HOST:]PORT --out FILE [--frames N] [--wait S]\n"
@@ -82,6 +84,9 @@ constexpr const char* kUsage =
     "divergence,\n"
     "                      and on a recording cut short (no end mark, or a frame cut: a game that "
     "crashed)\n"
+    "  --traced            with --validate: every call traced, and from each keyframe on a world "
+    "rebuilt from it,\n"
+    "                      as the debugger re-runs them: what it shows is what the game got\n"
     "  --allow-truncated   with --validate: a recording cut short passes if its whole frames "
     "replay\n"
     "  --stats             per moving item: moves, hits, longest move, moves that ended inside a "
@@ -120,6 +125,8 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     } else if (a == "--validate") {
       o.validate = true;
+    } else if (a == "--traced") {
+      o.traced = true;
     } else if (a == "--stats") {
       o.stats = true;
     } else if (a == "--tolerant") {
@@ -164,8 +171,8 @@ Options parse(int argc, char** argv) {
   if (o.listen) {
     if (o.listen->address.empty()) throw UsageError{"--out, --frames and --wait go with --listen"};
     if (o.listen->out.empty()) throw UsageError{"--listen needs --out FILE (where to save it)"};
-    if (!o.file.empty() || o.validate || o.stats || o.mover || o.tolerant || o.allowTruncated ||
-        o.failOn.any()) {
+    if (!o.file.empty() || o.validate || o.traced || o.stats || o.mover || o.tolerant ||
+        o.allowTruncated || o.failOn.any()) {
       throw UsageError{"--listen receives a recording: validate it afterwards with tv-replay FILE"};
     }
     return o;
@@ -174,6 +181,7 @@ Options parse(int argc, char** argv) {
   if ((o.validate + o.stats + o.mover.has_value()) > 1) {
     throw UsageError{"--validate, --stats and --what-if are separate reports: pick one"};
   }
+  if (o.traced && !o.validate) throw UsageError{"--traced goes with --validate"};
   if ((o.substep || o.updatesAsMoves) && !o.mover) {
     throw UsageError{"--substep and --updates-as-moves go with --what-if"};
   }
@@ -235,8 +243,11 @@ std::string cutShort(const tv::ReplaySummary& s) {
 }
 
 int validate(tv::Replay& r, const Options& o) {
-  const std::optional<tv::Divergence> d = r.validate();
+  const bool traced = o.traced;
+  const std::optional<tv::Divergence> d =
+      r.validate({}, traced ? tv::Replay::Tracing::on : tv::Replay::Tracing::off);
   if (d) {
+    if (traced) std::cout << "traced (as the debugger re-runs it): ";
     std::cout << d->report();
     return 1;
   }
@@ -252,9 +263,10 @@ int validate(tv::Replay& r, const Options& o) {
               << "--allow-truncated accepts a recording cut short\n";
     return 1;
   }
-  std::printf("ok: %llu frames, %llu calls replayed bit for bit%s%s\n",
+  std::printf("ok: %llu frames, %llu calls replayed bit for bit%s%s%s\n",
               static_cast<unsigned long long>(s.frames),
-              static_cast<unsigned long long>(s.calls), damage(s).c_str(),
+              static_cast<unsigned long long>(s.calls),
+              traced ? ", traced and from every keyframe" : "", damage(s).c_str(),
               !s.damagedAt && !s.closed ? "; the file has no end mark (allowed)" : "");
   return 0;
 }

@@ -172,16 +172,24 @@ struct Batch::Search {
     if (b.goal == b.rect.position()) return;
     asking = i;
     const auto answer = [this](ItemId, ItemId other) { return staticAnswer(other); };
-    // Nothing whose interior meets the path's hull: no hit, decided without the sweep. A hull
-    // inside one already found clear is clear too (what the filter sees can only shrink as
-    // pairs cross), and a slide or touch keeps a body inside its first hull.
+    // Nothing that could stop it meets the path's hull (no item outside the batch that it has
+    // not crossed): no hit, decided without the sweep and without asking the filter — which is
+    // asked only about what the sweep below hits, in its order, so that its questions do not
+    // depend on the order the world's cells list their items in. A hull inside one already
+    // found clear is clear too (what may stop a body can only shrink as pairs cross), and a
+    // slide or touch keeps a body inside its first hull.
     const Rect hull = unite(b.rect, b.rect.at(b.goal));
     const Rect& was = clear[i];
     if (hull.x >= was.x && hull.y >= was.y && hull.right() <= was.right() &&
         hull.bottom() <= was.bottom()) {
       return;
     }
-    if (!world->anyOverlap(hull, {}, Filter(answer))) {
+    const auto mayStop = [this](ItemId, ItemId other) {
+      const bool body = other.index < bodyBySlot.size() && bodyBySlot[other.index] != kNoBody;
+      return body || crossed.contains(staticKey(asking, other.index)) ? response::ignore
+                                                                      : response::slide;
+    };
+    if (!world->anyOverlap(hull, {}, Filter(mayStop))) {
       clear[i] = hull;
       return;
     }

@@ -78,6 +78,13 @@ class SpatialHash {
         if (f(e)) return true;
     return false;
   }
+  /// Calls f(Cell) for each cell a small item (not large) is registered in.
+  template <class F>
+  void forEachCellOf(std::uint32_t slot, F&& f) const {
+    const Registration& g = regs_[slot];
+    const std::size_t n = g.count();
+    for (std::size_t i = 0; i < n; ++i) f(keys_[g.cell[i]]);
+  }
   /// With staysInCells: `slot`'s registration now holds `to`.
   void rewrite(std::uint32_t slot, const Rect& to) {
     const Registration& g = regs_[slot];

@@ -309,7 +309,8 @@ std::size_t World::memoryBytes() const {
       hash_->memoryBytes() + slots_.capacity() * sizeof(Slot) +
       freeSlots_.capacity() * sizeof(std::uint32_t) + stamp_.capacity() * sizeof(std::uint32_t) +
       orders_.capacity() * sizeof(std::uint64_t) + collisions_.capacity() * sizeof(Collision) +
-      (excluded_.capacity() + queryScratch_.capacity()) * sizeof(std::uint32_t) +
+      (excluded_.capacity() + queryScratch_.capacity() + overlapping_.capacity()) *
+          sizeof(std::uint32_t) +
       hits_.capacity() * sizeof(Hit) + candidates_.capacity() * sizeof(Candidate) +
       responses_.capacity() * sizeof(NamedResponse);
   // A std::map node: the value and three pointers and a colour, rounded up by the allocator.
@@ -395,37 +396,52 @@ class Slant {
 
 }  // namespace
 
+void World::refuseAnswer(ResponseId resp) {
+  fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
+}
+
+inline ResponseId World::ask(ItemId self, ItemId other, Filter filter, MoveTrace* trace) const {
+  const ResponseId resp = filter(self, other);
+  if (trace) trace->answers.push_back({other, resp});
+  if (resp != response::ignore && resp >= responses_.size()) [[unlikely]] refuseAnswer(resp);
+  return resp;
+}
+
 template <class Visit>
-bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
-                          Filter filter, MoveTrace* trace, Collision& best, Visit&& visit) const {
-  const ItemId selfId = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
-  // Only what meets the move's bounding box (hull) can be hit: four compares before the exact
-  // test.
+bool World::firstHitAmong(ItemId self, const Rect& r, Vec2 goal, Filter filter, bool known,
+                          MoveTrace* trace, Collision& best, Visit&& visit) const {
+  // Only what meets the leg's bounding box (by its exact edges) can be hit: four compares
+  // before the exact test.
+  const Rect g = r.at(goal);
+  const Box legBox{std::min(r.x, g.x), std::min(r.y, g.y), std::max(r.right(), g.right()),
+                   std::max(r.bottom(), g.bottom())};
   // A diagonal leg sweeps a hexagon, not its bounding box: an obstacle beyond a slanted side is
   // separated along the leg's normal n, on which the moving rect's shadow never changes. One
   // interval test rejects it before the exact sweep; it rejects only by more than the rounding
   // of the projections, so it never drops a hit.
   const Slant slant(r, goal);
   hits_.clear();
-  visit([&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect) {
+  visit([&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect,
+            ResponseId answer) {
     const ItemId otherId{other, generation};
     if (trace) trace->candidates.push_back(otherId);
-    if (!overlaps(hull, otherRect) || slant.separates(otherRect)) return;
+    if (answer == response::ignore && known) return;
+    if (!legBox.meets(otherRect) || slant.separates(otherRect)) return;
     if (!excluded_.empty() &&
         std::find(excluded_.begin(), excluded_.end(), other) != excluded_.end()) {
       return;
     }
     const Sweep s = sweepRect(r, goal, otherRect);
     if (s.kind == SweepKind::miss) return;
-    hits_.push_back({s, otherRect, otherId});
+    hits_.push_back({s, otherRect, otherId, answer});
   });
   // The hits are put in one order that depends on them alone — their rounded times, then exact
-  // corners last, then add order — and the filter is asked about each that would lead at its
-  // turn: so the pairs asked do not depend on the order the candidates came in (the cells' walk,
-  // the narrow move's list, a restored world's cells), every path asks about the same pairs, and
-  // a recording's answers serve a replay that takes another path. The leader is still chosen on
-  // exact times; near-ties in the rounded order only mean one more pair asked. Add order breaks
-  // ties only, so the slots' orders (a cache miss each) are read only then.
+  // corners last, then add order — and, where the filter's answers are not known yet, it is
+  // asked about each that would lead at its turn: so the pairs asked do not depend on the order
+  // the candidates came in (the cells' walk, a restored world's cells), and a recording's
+  // answers serve a replay. The leader is still chosen on exact times; near-ties in the rounded
+  // order only mean one more pair asked. Add order breaks ties only, so the slots' orders (a
+  // cache miss each) are read only then.
   if (hits_.size() > 1) {
     std::sort(hits_.begin(), hits_.end(), [&](const Hit& a, const Hit& b) {
       if (a.sweep.ti != b.sweep.ti) return a.sweep.ti < b.sweep.ti;
@@ -441,17 +457,21 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
                            [&] { return orders_[h.id.index] < orders_[lead->id.index]; })) {
       continue;
     }
-    const ResponseId resp = filter(selfId, h.id);
-    if (trace) trace->answers.push_back({h.id, resp});
-    if (resp == response::ignore) continue;
-    if (resp >= responses_.size()) {
-      fail(kMove, "filter returned response " + std::to_string(resp) + ", which is not registered");
+    ResponseId resp = h.answer;
+    if (!known) {
+      // Asked once a move: a short move's first read, or an earlier leg, may have asked.
+      resp = answered(h.id.index);
+      if (resp == kUnasked) {
+        resp = ask(self, h.id, filter, trace);
+        candidates_.push_back({h.rect, h.id.index, h.id.generation, resp});
+      }
     }
+    if (resp == response::ignore) continue;
     lead = &h;
     leadResponse = resp;
   }
   if (lead == nullptr) return false;
-  best.item = selfId;
+  best.item = self;
   best.other = lead->id;
   best.overlaps = lead->sweep.kind == SweepKind::overlap;
   best.corner = lead->sweep.corner;
@@ -465,46 +485,146 @@ bool World::firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Re
   return true;
 }
 
-bool World::firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
+
+bool World::firstHit(ItemId self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
                      MoveTrace* trace, Collision& best) const {
   const Rect hull = unite(r, r.at(goal));
-  return firstHitAmong(self, r, goal, hull, filter, trace, best, [&](const auto& f) {
-    forEachCandidate(self, r, goal, hull, broad, trace, f);
+  return firstHitAmong(self, r, goal, filter, false, trace, best, [&](const auto& f) {
+    forEachCandidate(self.index, r, goal, hull, broad, trace,
+                     [&](std::uint32_t slot, std::uint32_t generation, const Rect& rect) {
+                       f(slot, generation, rect, kUnasked);
+                     });
   });
 }
 
-bool World::firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
-                       Vec2 goal, Filter filter, Collision& best) const {
-  return firstHitAmong(self, r, goal, unite(r, r.at(goal)), filter, nullptr, best,
-                       [&](const auto& f) {
-                         for (const Candidate& c : candidates) f(c.slot, c.generation, c.rect);
-                       });
+ResponseId World::answered(std::uint32_t slot) const {
+  // What this move asked already: a short move's first read, and the hits of earlier legs.
+  for (const Candidate& c : candidates_)
+    if (c.slot == slot) return c.answer;
+  return kUnasked;
 }
 
-MoveResult World::run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
-                      const MoveOptions& o, const Box* box) const {
+inline World::Reach World::reach(std::uint32_t self, const Rect& to, const Box& box) const {
+  const detail::SpatialHash& hash = *hash_;
+  stayed_ = self != ItemId::kNone && hash.staysInCells(self, to);
+  if (stayed_) return {Reach::own, {}};
+  // By the grid alone (not by which cells are occupied now, which depends on history), so that
+  // which pairs the filter is asked about does not depend on it either.
+  const CellRange cells = grid_.cellsHolding(box.x0, box.y0, box.x1, box.y1);
+  if (cells.count() > kReachCells) return {Reach::walk, {}};
+  // Items are registered in the cells their half-open extent meets, so an item whose interior
+  // meets the box shares one of the cells the half-open box meets.
+  return {Reach::box, hash.live(cells)};
+}
+
+template <class F>
+void World::forEachInReach(const Reach& reach, std::uint32_t self, const Box& box,
+                           MoveTrace* trace, F&& f) const {
+  const detail::SpatialHash& hash = *hash_;
+  // Each item whose interior meets the box, once: an item in several of the cells is listed in
+  // each, and is taken from the first only.
+  const auto take = [&](const detail::HashEntry& e) {
+    if (!box.meets(e.rect)) return false;
+    const std::uint32_t slot = e.slot();
+    if (slot == self) return false;
+    if (e.shared()) {
+      for (const Candidate& c : candidates_)
+        if (c.slot == slot) return false;
+    }
+    f(slot, e.generation, e.rect);
+    return false;
+  };
+  if (reach.kind == Reach::own) {
+    // The box lies in the cells the item is registered in: read them without finding them.
+    if (trace) hash.forEachCellOf(self, [&](Cell c) { trace->cells.push_back(c); });
+    (void)hash.anyInOwnCells(self, take);
+  } else {
+    if (trace) Grid::forEachCell(reach.cells, [&](Cell c) { trace->cells.push_back(c); });
+    (void)hash.anyIn(reach.cells, take);
+  }
+}
+
+MoveResult World::run(ItemId self, const Rect& r, Vec2 goal, Filter filter,
+                      const MoveOptions& o) const {
   MoveTrace* trace = activeTrace(o.trace);
   collisions_.clear();
   excluded_.clear();
+  candidates_.clear();
   if (trace) {
-    trace->item = self == ItemId::kNone ? ItemId{} : ItemId{self, slots_[self].generation};
+    trace->item = self;
     trace->start = r;
     trace->goal = goal;
   }
+  // A short move (its bounding box meets at most kReachCells cells) reads those cells once (the
+  // cells its item is in, when its goal stays in them), lists the items whose interior meets
+  // the box and asks the filter about each, in slot order, before anything is swept. A move
+  // that meets nothing the filter keeps ends there. Every leg that stays inside the box (the
+  // legs of the built-in responses do, but a bounce's or a push out of an overlap the move
+  // starts in may not) is swept against the kept ones. A leg that leaves the box, and every leg
+  // of a longer move, walks the cells of that leg and asks the filter about its hits in the
+  // order they happen (firstHitAmong), once about each pair in a move. Which pairs are asked,
+  // in which order, follows from the world's items and the move alone — not from the order the
+  // cells list their items in, not from which cells were ever occupied, not from a trace.
+  const Rect to = r.at(goal);
+  const Box box{std::min(r.x, to.x), std::min(r.y, to.y), std::max(r.right(), to.right()),
+                std::max(r.bottom(), to.bottom())};
+  const Reach near = reach(self.index, to, box);
+  if (near.kind != Reach::walk) {
+    forEachInReach(near, self.index, box, trace,
+                   [&](std::uint32_t slot, std::uint32_t generation, const Rect& rect) {
+                     candidates_.push_back({rect, slot, generation, kUnasked});
+                   });
+    // In slot order (by insertion when they are few, as they mostly are).
+    const auto bySlot = [](const Candidate& a, const Candidate& b) { return a.slot < b.slot; };
+    if (candidates_.size() > 16) {
+      std::sort(candidates_.begin(), candidates_.end(), bySlot);
+    } else {
+      for (std::size_t i = 1; i < candidates_.size(); ++i) {
+        const Candidate c = candidates_[i];
+        std::size_t j = i;
+        for (; j > 0 && bySlot(c, candidates_[j - 1]); --j) candidates_[j] = candidates_[j - 1];
+        candidates_[j] = c;
+      }
+    }
+    bool kept = false;
+    for (Candidate& c : candidates_) {
+      c.answer = ask(self, {c.slot, c.generation}, filter, trace);
+      kept = kept || c.answer != response::ignore;
+    }
+    if (!kept) {
+      // Nothing it may meet: the move ends at its goal.
+      if (trace) {
+        trace->legs.push_back({r, goal});
+        trace->final = goal;
+      }
+      return {goal, {}};
+    }
+  }
+  return legs(self, r, goal, filter, o, near.kind != Reach::walk ? &box : nullptr, trace);
+}
+
+MoveResult World::legs(ItemId self, const Rect& r, Vec2 goal, Filter filter,
+                       const MoveOptions& o, const Box* listed, MoveTrace* trace) const {
   Vec2 start = r.position();
   // The last leg start known to be outside everything the move did not start in: a contact
   // placed from an obstacle's edge is; a push out of an overlap may land in a neighbour.
   Vec2 safe = start;
-  Collision c;  // firstHit fills every field but target, for each leg
+  Collision& c = hit_;  // firstHit fills every field but target, for each leg
   for (int i = 0;; ++i) {
     if (i == o.maxResponses) {
       goal = safe;  // out of responses (acute pockets, bouncing in a slot): stop where safe
       break;
     }
-    if (trace) trace->legs.push_back({r.at(start), goal});
-    const bool hit = box != nullptr && box->holds(r.at(start), goal)
-                         ? firstHitIn(candidates_, self, r.at(start), goal, filter, c)
-                         : firstHit(self, r.at(start), goal, filter, o.broad, trace, c);
+    const Rect leg = r.at(start);
+    if (trace) trace->legs.push_back({leg, goal});
+    const bool hit =
+        listed != nullptr && listed->holds(leg, goal)
+            ? firstHitAmong(self, leg, goal, filter, true, trace, c,
+                            [&](const auto& f) {
+                              for (const Candidate& k : candidates_)
+                                f(k.slot, k.generation, k.rect, k.answer);
+                            })
+            : firstHit(self, leg, goal, filter, o.broad, trace, c);
     if (!hit) break;
     const Leg next = respond(c, goal);
     // A response of the user's must hand back a leg the world can sweep: refuse it before
@@ -541,7 +661,7 @@ MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& 
   validateGoal(s.rect, goal, "tv::World::check");
   validateOptions(options, "tv::World::check");
   if (options.semantics == MoveSemantics::bump) return bumpRun(id.index, s.rect, goal, filter, options);
-  return run(id.index, s.rect, goal, filter, options);
+  return run(id, s.rect, goal, filter, options);
 }
 
 MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& options) {
@@ -559,68 +679,16 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
     place(id.index, s.rect.at(result.position));
     return result;
   }
-  if (activeTrace(options.trace) == nullptr) {
-    // Most moves in a crowd meet nothing: when every other item that meets the move's bounding
-    // box is ignored by the filter, the full path would find no hit and end at the goal, so one
-    // scan of the box's few cells decides it. When something kept is in reach, the legs of the
-    // built-in responses stay inside that box (but a bounce's, or a push out of an overlap the
-    // move starts in), so they are swept against the items that meet it, gathered from the same
-    // cells, instead of walking the cells again; a leg that leaves the box walks the cells. The
-    // scan may ask the filter about pairs the full path would not have asked about (it must be
-    // a pure function of the pair). Longer moves take the full path, whose swept walk reads
-    // fewer cells.
-    const Rect to = s.rect.at(goal);
-    const Box box{std::min(s.rect.x, to.x), std::min(s.rect.y, to.y),
-                  std::max(s.rect.right(), to.right()), std::max(s.rect.bottom(), to.bottom())};
-    detail::SpatialHash& hash = *hash_;
-    const auto kept = [&](const detail::HashEntry& e) {
-      return box.meets(e.rect) && e.slot() != id.index &&
-             filter(id, ItemId{e.slot(), e.generation}) != response::ignore;
-    };
-    const auto gather = [&](const detail::HashEntry& e) {
-      if (!box.meets(e.rect) || e.slot() == id.index) return false;
-      if (e.shared()) {  // in several of the cells: list it once
-        for (const Candidate& c : candidates_)
-          if (c.slot == e.slot()) return false;
-      }
-      candidates_.push_back({e.rect, e.slot(), e.generation});
-      return false;
-    };
-    bool narrow = false;
-    if (hash.staysInCells(id.index, to)) {
-      // The box lies in the cells the item is in: read them without finding them.
-      if (!hash.anyInOwnCells(id.index, kept)) {
-        collisions_.clear();
-        hash.rewrite(id.index, to);
-        slots_[id.index].rect = to;
-        return {goal, {}};
-      }
-      candidates_.clear();
-      (void)hash.anyInOwnCells(id.index, gather);
-      narrow = true;
-    } else {
-      // Items are registered in the cells their half-open extent meets, so an item whose
-      // interior meets the box shares one of the cells the half-open box meets.
-      const CellRange cells = hash.live(grid_.cellsHolding(box.x0, box.y0, box.x1, box.y1));
-      if (cells.count() <= 4) {
-        if (!hash.anyIn(cells, kept)) {
-          collisions_.clear();
-          place(id.index, to);
-          return {goal, {}};
-        }
-        candidates_.clear();
-        (void)hash.anyIn(cells, gather);
-        narrow = true;
-      }
-    }
-    if (narrow) {
-      const MoveResult result = run(id.index, s.rect, goal, filter, options, &box);
-      place(id.index, s.rect.at(result.position));
-      return result;
-    }
+  const Rect from = s.rect;
+  const MoveResult result = run(id, from, goal, filter, options);
+  const Rect to = from.at(result.position);
+  if (stayed_ && result.collisions.empty()) {
+    // It ended at its goal, in the cells it is registered in: rewrite its entries in place.
+    hash_->rewrite(id.index, to);
+    slots_[id.index].rect = to;
+  } else {
+    place(id.index, to);  // every leg was checked as it was made
   }
-  const MoveResult result = run(id.index, s.rect, goal, filter, options);
-  place(id.index, s.rect.at(result.position));  // every leg was checked as it was made
   return result;
 }
 
@@ -636,7 +704,7 @@ MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
   validateGoal(r, goal, "tv::World::project");
   validateOptions(options, "tv::World::project");
   if (options.semantics == MoveSemantics::bump) return bumpRun(ItemId::kNone, r, goal, filter, options);
-  return run(ItemId::kNone, r, goal, filter, options);
+  return run(ItemId{}, r, goal, filter, options);
 }
 
 // [SECTION] responses ---------------------------------------------------------------------------
@@ -739,30 +807,38 @@ bool World::anyOverlap(const Rect& r, ItemId skip, Filter filter) const {
              "indices below 2^52)");
   }
   const std::uint32_t self = has(skip) ? skip.index : ItemId::kNone;
+  // The items whose interior meets r are gathered first and the filter is asked about them in
+  // slot order (as a move's first read asks), until one is not ignored: which pairs it is asked about then depends on the
+  // world's items alone, not on the order its cells list them in (a world restored from a
+  // snapshot, as a replay's keyframe, lists them in another order).
+  overlapping_.clear();
+  const detail::SpatialHash& hash = *hash_;
   // A small rect reads its few cells directly: items are registered in the cells their
   // half-open extent meets, and an item whose interior meets r shares one of the cells r's
-  // half-open extent meets. Only an item in several cells needs a visit stamp, so that the
-  // filter is asked once about each item (a filter may gather what it is asked about).
-  const detail::SpatialHash& hash = *hash_;
+  // half-open extent meets. Only an item in several cells needs a visit stamp.
   const CellRange cells = hash.live(grid_.cellsHolding(r));
-  if (cells.count() <= 4) {
+  if (cells.count() <= kReachCells) {
     const std::uint32_t epoch = cells.count() > 1 ? nextEpoch() : 0;
-    return hash.anyIn(cells, [&](const detail::HashEntry& e) {
+    (void)hash.anyIn(cells, [&](const detail::HashEntry& e) {
       if (e.slot() == self || !overlaps(r, e.rect)) return false;
       if (epoch != 0 && e.shared()) {
         if (stamp_[e.slot()] == epoch) return false;
         stamp_[e.slot()] = epoch;
       }
-      return filter(skip, ItemId{e.slot(), e.generation}) != response::ignore;
+      overlapping_.push_back(e.slot());
+      return false;
     });
+  } else {
+    forEachCandidate(self, r, r.position(), r, BroadPhase::bounds, nullptr,
+                     [&](std::uint32_t other, std::uint32_t, const Rect& rect) {
+                       if (overlaps(r, rect)) overlapping_.push_back(other);
+                     });
   }
-  bool any = false;
-  forEachCandidate(self, r, r.position(), r, BroadPhase::bounds, nullptr,
-                   [&](std::uint32_t other, std::uint32_t generation, const Rect& rect) {
-                     if (any || !overlaps(r, rect)) return;
-                     any = filter(skip, ItemId{other, generation}) != response::ignore;
-                   });
-  return any;
+  if (overlapping_.size() > 1) std::sort(overlapping_.begin(), overlapping_.end());
+  for (const std::uint32_t k : overlapping_) {
+    if (filter(skip, ItemId{k, slots_[k].generation}) != response::ignore) return true;
+  }
+  return false;
 }
 
 std::vector<ItemId> World::queryPoint(Vec2 p) const {

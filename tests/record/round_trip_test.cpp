@@ -37,6 +37,10 @@ TEST(RoundTrip, EveryCallKindReplaysWithZeroDivergencesAndEqualState) {
   ASSERT_FALSE(d) << d->report();
   EXPECT_EQ(replay.world().stateHash(), s.world.stateHash());
   EXPECT_EQ(replay.frames(), s.frames);
+  // And as the debugger re-runs it: every call traced, from every keyframe.
+  const std::optional<tv::Divergence> traced = replay.validate({}, tv::Replay::Tracing::on);
+  ASSERT_FALSE(traced) << traced->report();
+  EXPECT_EQ(replay.world().stateHash(), s.world.stateHash());
 
   // Every kind was exercised, so the test means what its name says.
   std::vector<bool> seen(tv::kCallKindCount, false);
@@ -119,6 +123,7 @@ TEST(RoundTrip, AMidGameAttachStartsFromTheWorldAsItIs) {
   replay.seek(0, 0);
   EXPECT_EQ(replay.world().state().freeSlots, s.freeAtAttach);
   EXPECT_FALSE(replay.validate());
+  EXPECT_FALSE(replay.validate({}, tv::Replay::Tracing::on));
 }
 
 TEST(RoundTrip, AFileRecorderWritesTheSameBytesAsAMemoryOne) {
@@ -202,6 +207,7 @@ TEST(RoundTrip, LabelsGivenBeforeAttachAreKeptAndASecondAttachIsRefused) {
   EXPECT_EQ(replay.label(a), "crate");
   EXPECT_EQ(replay.summary().moves, 1u);
   EXPECT_FALSE(replay.validate());
+  EXPECT_FALSE(replay.validate({}, tv::Replay::Tracing::on));
 }
 
 TEST(RoundTrip, StepGoesCallByCallAndFillsTheTrace) {
@@ -279,6 +285,7 @@ TEST(RoundTrip, ARecorderOutlivingItsWorldAndFixedStepFinishesTheFile) {
   EXPECT_TRUE(rec.ok()) << rec.error();
   tv::Replay replay = tv::Replay::fromBytes(rec.bytes());
   EXPECT_FALSE(replay.validate().has_value());
+  EXPECT_FALSE(replay.validate({}, tv::Replay::Tracing::on).has_value());
 }
 
 }  // namespace

@@ -28,6 +28,8 @@ TEST(SampleGame, ItsRecordingValidatesBitForBit) {
   EXPECT_TRUE(r.warnings().empty());
   const std::optional<tv::Divergence> d = r.validate();
   EXPECT_FALSE(d) << d->report();
+  const std::optional<tv::Divergence> traced = r.validate({}, tv::Replay::Tracing::on);
+  EXPECT_FALSE(traced) << traced->report();
   EXPECT_GT(r.summary().moves, 500u);
   EXPECT_EQ(r.label(r.items()[0].id).rfind("tile ", 0), 0u);
 }
@@ -42,8 +44,11 @@ TEST(SampleGame, RecordingChangesNothingInTheGame) {
 }
 
 TEST(SampleGame, TheNaiveGamesRecordingValidatesToo) {
-  const std::optional<tv::Divergence> d = tv::Replay::fromBytes(recordGame(true)).validate();
+  tv::Replay r = tv::Replay::fromBytes(recordGame(true));
+  const std::optional<tv::Divergence> d = r.validate();
   EXPECT_FALSE(d) << d->report();
+  const std::optional<tv::Divergence> traced = r.validate({}, tv::Replay::Tracing::on);
+  EXPECT_FALSE(traced) << traced->report();
 }
 
 TEST(WhatIf, DiscreteTunnelsThroughTheThinWallWhereTheRecordedContinuousRunDidNot) {

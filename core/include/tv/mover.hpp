@@ -42,14 +42,11 @@ enum class MoverKind : std::uint8_t {
   /// moves over 2^24 px on an axis. Never tunnels through bodies and obstacles at least 1 px
   /// thick; a thinner one can fit between two consecutive pixel positions and be stepped over.
   pixel,
-  /// Continuous, made cheap where bodies rest and walk: a body moving back into what its last
-  /// move ended against (resting on a floor under gravity, walking along it, pressed to a
-  /// wall) reads its move's bounding box once — when the box spans at most 4 cells, or the
-  /// move is shorter than `safetyFraction` of the smallest extent of the mover and the world —
-  /// and slides from that one read: what its filter does not ignore there is all that its legs
-  /// can meet while they slide, touch or cross. Every other move, and one that meets a bounce
-  /// or a user's response, goes to World::move (whose lean path decides a free move in one
-  /// scan). Same results as continuous, bit for bit.
+  /// Continuous where it is cheap: World::move itself reads the few cells of a short move's
+  /// bounding box once and sweeps every leg that stays in that box against what it found
+  /// (bodies resting on a floor, walking along it, pressed to a wall), so adaptive is now
+  /// continuous by another name — the same move, the same filter questions, the same cost.
+  /// Kept so that recordings, scenes and tables that name it go on working.
   adaptive,
 };
 
@@ -61,8 +58,10 @@ struct MoverSpec {
   double maxStep = 0.0;
   /// substep: how each piece moves, `discrete` or `sweep`.
   MoverKind inner = MoverKind::discrete;
-  /// adaptive: fraction of the smallest extent below which a pressing move reads its bounding
-  /// box however many cells it spans. Range (0, 1], default 0.25.
+  /// adaptive, formerly: fraction of the smallest extent below which a pressing move read its
+  /// bounding box however many cells it spanned. No longer read (adaptive is continuous); still
+  /// checked and recorded, so that specs and recordings made with it stay valid. Range (0, 1],
+  /// default 0.25.
   double safetyFraction = 0.25;
 
   /// Stable name: "discrete", "sweep", "substep-discrete", "substep-sweep", "continuous",
@@ -105,10 +104,7 @@ class Mover {
                   MoveTrace* trace = nullptr);
 
   /// Forgets per-item state (the pixel mover's remainders), e.g. when a scene restarts.
-  void reset() {
-    remainder_.clear();
-    contact_.clear();
-  }
+  void reset() { remainder_.clear(); }
 
  private:
   MoveResult observedMove(WorldObserver& o, World& world, ItemId id, Vec2 goal, Filter filter,
@@ -118,9 +114,6 @@ class Mover {
                       std::vector<Collision>& out);
   MoveResult substep(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
   MoveResult pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
-  MoveResult adaptive(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
-  bool settleFromOneScan(World& world, ItemId id, const Rect& start, Vec2 goal, Filter filter,
-                         MoveTrace* trace, MoveResult& out);
 
   MoverSpec spec_;
   std::string name_;
@@ -132,18 +125,6 @@ class Mover {
     std::uint32_t generation = 0;
   };
   std::vector<Remainder> remainder_;  // pixel: sub-pixel remainder per item slot
-  struct Reached {  // adaptive: an item in a move's bounding box that its filter does not ignore
-    ItemId id;
-    Rect rect;
-    ResponseId response = response::slide;
-    bool crossed = false;  // passed through earlier in this move
-  };
-  std::vector<Reached> reached_;
-  struct Contact {
-    Vec2 normal;                   // of the last move's last collision
-    std::uint32_t generation = 0;  // the item's + 1; 0: its last move met nothing
-  };
-  std::vector<Contact> contact_;  // adaptive, per item slot
 };
 
 }  // namespace tv

@@ -213,7 +213,9 @@ class World {
   /// The same into `out` (cleared first), reusing its memory.
   void queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip = {}) const;
   /// True when an item other than `skip` overlaps `r` and the filter does not ignore the pair
-  /// (asked as filter(skip, other)). No allocation; the cheap "is this spot free?".
+  /// (asked as filter(skip, other) about the overlapping items in the order of their handles'
+  /// indices, until one is not ignored). No allocation once warm; the cheap "is this spot
+  /// free?".
   [[nodiscard]] bool anyOverlap(const Rect& r, ItemId skip = {}, Filter filter = {}) const;
   /// Items containing `p` in the half-open sense [x, right) × [y, bottom), in add order.
   [[nodiscard]] std::vector<ItemId> queryPoint(Vec2 p) const;
@@ -327,31 +329,58 @@ class World {
              std::max(r.right(), goal.x + r.w) <= x1 && std::max(r.bottom(), goal.y + r.h) <= y1;
     }
   };
-  // With `box`, candidates_ holds every item that meets it: a leg inside it is swept against
-  // those alone.
-  MoveResult run(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, const MoveOptions& o,
-                 const Box* box = nullptr) const;
-  // An item that may be hit, as the spatial hash holds it.
+  // One move of the rect `r` (the item `self`, or an invalid id for a projection): check, move
+  // and project, traced or not, are this one path.
+  MoveResult run(ItemId self, const Rect& r, Vec2 goal, Filter filter, const MoveOptions& o) const;
+  // run's legs, once something the filter keeps may be met (apart, so that a move that meets
+  // nothing pays for none of it): with `listed`, candidates_ holds every item meeting that box.
+  MoveResult legs(ItemId self, const Rect& r, Vec2 goal, Filter filter, const MoveOptions& o,
+                  const Box* listed, MoveTrace* trace) const;
+  // Where a short move finds what it can meet: the cells its item is in (when its goal stays in
+  // them: `own`), or the few cells of its box (at most kReachCells: `box`); `walk` for a longer
+  // move, whose legs walk their own cells. Sets stayed_.
+  static constexpr std::int64_t kReachCells = 4;
+  struct Reach {
+    enum Kind : std::uint8_t { walk, own, box } kind;
+    CellRange cells;
+  };
+  Reach reach(std::uint32_t self, const Rect& to, const Box& box) const;
+  // Calls f(slot, generation, const Rect&) once for each item but `self` whose interior meets
+  // the box, from the cells of `reach` (not walk).
+  template <class F>
+  void forEachInReach(const Reach& reach, std::uint32_t self, const Box& box, MoveTrace* trace,
+                      F&& f) const;
+  // An item that may be hit, as the spatial hash holds it, and the filter's answer about it
+  // (kUnasked until the filter is asked).
+  static constexpr ResponseId kUnasked = response::ignore - 1;
   struct Candidate {
     Rect rect;
     std::uint32_t slot;
     std::uint32_t generation;
+    ResponseId answer;
   };
-  // The first hit of a leg among every item the spatial hash gives for its cells, or among a
-  // list known to hold every item that meets the leg's hull.
+  // The first hit of a leg among the items `visit` gives (f(slot, generation, rect, answer)):
+  // with `known`, the answers are those given (the ignored are not swept); without, the filter
+  // is asked about the hits in the order they happen, as far as needed to find the first kept.
   template <class Visit>
-  bool firstHitAmong(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull, Filter filter,
+  bool firstHitAmong(ItemId self, const Rect& r, Vec2 goal, Filter filter, bool known,
                      MoveTrace* trace, Collision& best, Visit&& visit) const;
   // A leg's hit before the filter is asked about it.
   struct Hit {
     Sweep sweep;
     Rect rect;
     ItemId id;
+    ResponseId answer;
   };
-  bool firstHitIn(std::span<const Candidate> candidates, std::uint32_t self, const Rect& r,
-                  Vec2 goal, Filter filter, Collision& best) const;
-  bool firstHit(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
+  // The first hit of a leg among every item the spatial hash gives for the cells it walks.
+  bool firstHit(ItemId self, const Rect& r, Vec2 goal, Filter filter, BroadPhase broad,
                 MoveTrace* trace, Collision& best) const;
+  // The filter's answer about (self, other), reported to the trace; refuses an answer that is not
+  // a registered response.
+  ResponseId ask(ItemId self, ItemId other, Filter filter, MoveTrace* trace) const;
+  [[noreturn]] static void refuseAnswer(ResponseId resp);
+  // The answer this move got about the item in `slot` (kUnasked if it was not asked).
+  [[nodiscard]] ResponseId answered(std::uint32_t slot) const;
   /// Calls f(slot, generation, const Rect&) once for each item registered in the cells the
   /// move visits.
   template <class F>
@@ -387,8 +416,11 @@ class World {
   mutable std::vector<Collision> collisions_;
   mutable std::vector<std::uint32_t> excluded_;
   mutable std::vector<std::uint32_t> queryScratch_;
+  mutable std::vector<std::uint32_t> overlapping_;  // anyOverlap's, apart: its filter may query
   mutable std::vector<Candidate> candidates_;
   mutable std::vector<Hit> hits_;
+  mutable Collision hit_;        // the current leg's first hit
+  mutable bool stayed_ = false;  // the last run's goal lies in the cells its item is in
   // bump's move: a leg's candidates, what it met (ids, the answer for each, and whether it may
   // not be entered again), kept apart from the core's own scratch.
   mutable std::vector<ItemId> bumpFound_;

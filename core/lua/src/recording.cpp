@@ -92,22 +92,28 @@ int label(lua_State* L) {
 }
 
 // tunnelvision.validateRecording(path) -> true, summary | false, report: replays the file on
-// a fresh world and compares every call's result with the recorded one, bit for bit (what
-// tv-replay --validate does, from Lua).
+// a fresh world and compares every call's result with the recorded one, bit for bit, then again
+// traced from every keyframe, as the debugger re-runs it (what tv-replay --validate and
+// --validate --traced do, from Lua).
 int validateRecording(lua_State* L) {
   const char* path = luaL_checkstring(L, 1);
   std::string report;
   bool ok = false;
   {
     tv::Replay replay = tv::Replay::open(path);  // tv::Error names the byte offset
-    const std::optional<tv::Divergence> d = replay.validate();
+    std::optional<tv::Divergence> d = replay.validate();
+    if (!d) {
+      d = replay.validate({}, tv::Replay::Tracing::on);
+      if (d) report = "traced (as the debugger re-runs it): ";
+    }
     ok = !d;
     if (d) {
-      report = d->report();
+      report += d->report();
     } else {
       const tv::ReplaySummary& s = replay.summary();
       report = std::to_string(s.frames) + " frames, " + std::to_string(s.calls) + " calls, " +
-               std::to_string(s.moves) + " moves: every result replayed bit for bit";
+               std::to_string(s.moves) + " moves: every result replayed bit for bit, untraced and "
+               "traced";
     }
   }
   lua_pushboolean(L, ok);

@@ -71,6 +71,7 @@ struct Replay::Impl {
   std::uint64_t frame = 0;
   std::uint32_t callIndex = 0;
   std::optional<Divergence> pendingDivergence;  // a keyframe that differs from the world
+  bool restoreAtKeyframes = false;  // validate(Tracing::on): go on from each keyframe, as seek
   std::vector<std::unique_ptr<Mover>> movers;   // by recorded mover id
   Batch batch;
   std::unique_ptr<Mover> whatIfMover;

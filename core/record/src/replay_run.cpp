@@ -210,6 +210,10 @@ void Replay::Impl::enterFrame(std::uint64_t f, bool restore) {
   }
   if (!what.empty()) {
     pendingDivergence = Divergence{f, 0, CallKind::advance, {}, what, expected, actual, fi.offset};
+  } else if (restoreAtKeyframes && !statefulMovers) {
+    // Go on from the keyframe, as a seek does: a world rebuilt from a snapshot, whose cells list
+    // their items in another order than the world that got here call by call.
+    restoreWorld(ws);
   }
 }
 
@@ -614,9 +618,17 @@ std::optional<Divergence> Replay::step(MoveTrace* trace) {
   return d.execute(trace, true);
 }
 
-std::optional<Divergence> Replay::validate(const std::function<bool(std::uint64_t)>& progress) {
+std::optional<Divergence> Replay::validate(const std::function<bool(std::uint64_t)>& progress,
+                                           Tracing tracing) {
   Impl& d = *impl_;
   d.cancelled = false;
+  const bool traced = tracing == Tracing::on;
+  MoveTrace trace;
+  d.restoreAtKeyframes = traced;
+  struct Reset {
+    Impl& d;
+    ~Reset() { d.restoreAtKeyframes = false; }
+  } reset{d};
   for (RecordedItem& r : d.items) r.endedOverlapping = 0;
   d.enterFrame(0, true);
   std::uint64_t reported = ~std::uint64_t{0};
@@ -629,7 +641,8 @@ std::optional<Divergence> Replay::validate(const std::function<bool(std::uint64_
       }
     }
     if (atEnd()) return std::nullopt;
-    if (std::optional<Divergence> dv = step(nullptr)) return dv;
+    trace.clear();
+    if (std::optional<Divergence> dv = step(traced ? &trace : nullptr)) return dv;
   }
 }
 

@@ -217,10 +217,16 @@ class Replay {
   std::optional<Divergence> step(MoveTrace* trace = nullptr);
 
   // -- whole-file checks -----------------------------------------------------------------------
+  /// How validate() re-runs the calls.
+  enum class Tracing : std::uint8_t {
+    off,  ///< as the game made them: call after call, untraced
+    on,   ///< as the debugger shows them: every call traced, and from each keyframe on a world
+          ///< rebuilt from its snapshot (after checking that the world got there), as a seek does
+  };
   /// Replays everything from the start; the first divergence, if any. `progress(frame)` may
   /// return false to cancel (then the result is empty and `cancelled()` true).
   [[nodiscard]] std::optional<Divergence> validate(
-      const std::function<bool(std::uint64_t)>& progress = {});
+      const std::function<bool(std::uint64_t)>& progress = {}, Tracing tracing = Tracing::off);
   [[nodiscard]] bool cancelled() const;  ///< the last validate() was cancelled by its progress
   /// What-if (options().mover set): the whole run against the recording.
   [[nodiscard]] WhatIfReport whatIf(double farAway = 64.0);

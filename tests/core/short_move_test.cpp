@@ -1,8 +1,8 @@
-// Specification of the narrow move: when something the filter keeps is in reach of a short move,
-// World::move gathers the items meeting the move's box once and sweeps every leg that stays in
-// the box against that list; a leg that leaves the box (a bounce, a user response) walks the
-// cells. Either way the result is the full path's, bit for bit. A traced move always takes the
-// full path, so a traced twin of the world is the reference here.
+// Specification of the short move: World::move reads the few cells of a short move's box once,
+// asks the filter about what meets the box, and sweeps every leg that stays in the box against
+// what it kept; a leg that leaves the box (a bounce, a user response) walks the cells. Either
+// way the move is the reference's (move_reference.hpp: every leg against every item), bit for
+// bit, down to the filter's questions.
 
 #include <gtest/gtest.h>
 
@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "move_reference.hpp"
 #include "tv/sim/rng.hpp"
 #include "tv/trace.hpp"
 #include "tv/world.hpp"
@@ -154,6 +155,11 @@ class Scene {
     return v;
   }
   Rng& rng() { return rng_; }
+  // The functions of the responses the filter may return, by id.
+  [[nodiscard]] std::vector<ResponseFn> responses() const {
+    return {&touchResponse, &crossResponse, &slideResponse, &bounceResponse, &halfwayResponse,
+            &backResponse};
+  }
 
   World world{kCell};
   std::vector<ItemId> movers;
@@ -164,111 +170,93 @@ class Scene {
   ResponseId halfway_ = 0, recoil_ = 0;
 };
 
-// Two identical scenes, one moved untraced (the lean and narrow paths wherever they apply), one
-// traced (the full path every move): every move's position and collisions are the same bit for
-// bit, and so are the state hashes; the traced move asks the filter about no pair the untraced
-// one did not ask about (while the two share their history); while movers resize across the four-cell boundary, teleport
-// into overlaps, are removed and re-added, and the untraced world is swapped for a copy and for a
-// restored state on the way.
-TEST(NarrowMove, EveryMoveEqualsTheTracedFullPathBitForBit) {
-  if constexpr (!kTraceCompiledIn) GTEST_SKIP() << "tracing compiled out: no reference";
+// Every move, made untraced and traced in turn, equals the reference's (computed on the world
+// just before it) bit for bit, position, collisions and the filter's questions in order; while
+// movers resize across the four-cell boundary, teleport into overlaps, are removed and re-added,
+// and the world is swapped for a copy and for a restored state on the way (a restored world's
+// cells list their items in another order).
+TEST(ShortMove, EveryMoveEqualsTheReferenceBitForBit) {
   std::size_t collisions = 0, moves = 0, overlapsAtStart = 0, largeMovers = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    Scene lean(seed), full(seed);
-    // What the untraced move asked; the traced one must ask nothing else (a recording made
-    // untraced holds those answers by pair, and the debugger steps it traced).
-    std::set<std::pair<std::uint32_t, std::uint32_t>> asked;
-    std::string unasked;
+    Scene scene(seed);
+    const std::vector<ResponseFn> fns = scene.responses();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> asked, refAsked;
     const auto filter = [&](ItemId item, ItemId other) {
-      asked.insert({item.index, other.index});
-      return lean.responseOf(item, other);
+      asked.push_back({item.index, other.index});
+      return scene.responseOf(item, other);
     };
-    const auto tracedFilter = [&](ItemId item, ItemId other) {
-      if (asked.count({item.index, other.index}) == 0 && unasked.empty())
-        unasked = std::to_string(item.index) + " about " + std::to_string(other.index);
-      return lean.responseOf(item, other);
+    const auto refFilter = [&](ItemId item, ItemId other) {
+      refAsked.push_back({item.index, other.index});
+      return scene.responseOf(item, other);
     };
     for (int tick = 0; tick < 40; ++tick) {
       if (tick == 13) {  // a copy carries on as the original would
-        World copy = lean.world;
-        lean.world = World(Scene::kCell);
-        lean.world = copy;
+        World copy = scene.world;
+        scene.world = World(Scene::kCell);
+        scene.world = copy;
       }
       if (tick == 27) {  // so does a world restored from the state
         World restored(Scene::kCell);
         (void)restored.addResponse("halfway", &halfwayResponse);
         (void)restored.addResponse("back", &backResponse);
-        restored.restore(lean.world.state());
-        lean.world = std::move(restored);
+        restored.restore(scene.world.state());
+        scene.world = std::move(restored);
       }
-      for (std::size_t i = 0; i < lean.movers.size(); ++i) {
-        Rng& rng = lean.rng();
+      for (std::size_t i = 0; i < scene.movers.size(); ++i) {
+        Rng& rng = scene.rng();
         const double u = rng.uniform();
         if (u < 0.04) {
           // Resized in place, often across the four-cell boundary (2×2 ↔ 3×2 at cell 16).
-          const Rect r = lean.world.rect(lean.movers[i]);
-          const Rect resized{r.x, r.y, rng.uniform() < 0.5 ? 20.0 : 36.0, rng.uniform(3, 20)};
-          lean.world.update(lean.movers[i], resized);
-          full.world.update(full.movers[i], resized);
+          const Rect r = scene.world.rect(scene.movers[i]);
+          scene.world.update(scene.movers[i],
+                             {r.x, r.y, rng.uniform() < 0.5 ? 20.0 : 36.0, rng.uniform(3, 20)});
           continue;
         }
         if (u < 0.06) {  // somewhere else, maybe inside something
-          const Rect r = lean.moverRect();
-          lean.world.update(lean.movers[i], r);
-          full.world.update(full.movers[i], r);
+          scene.world.update(scene.movers[i], scene.moverRect());
           continue;
         }
         if (u < 0.07) {  // removed and added again: slots, generations and large places reused
-          const Rect r = lean.moverRect();
-          lean.world.remove(lean.movers[i]);
-          full.world.remove(full.movers[i]);
-          lean.movers[i] = lean.world.add(r);
-          full.movers[i] = full.world.add(r);
-          ASSERT_EQ(lean.movers[i], full.movers[i]);
+          const Rect r = scene.moverRect();
+          scene.world.remove(scene.movers[i]);
+          scene.movers[i] = scene.world.add(r);
           continue;
         }
-        if (u < 0.12) lean.velocity[i] = lean.randomVelocity();
+        if (u < 0.12) scene.velocity[i] = scene.randomVelocity();
         MoveOptions options;
         const double m = rng.uniform();
         options.maxResponses = m < 0.1 ? 1 : m < 0.2 ? 2 : m < 0.3 ? 3 : 64;
         MoveTrace trace;
-        MoveOptions traced = options;
-        traced.trace = &trace;
-        const ItemId id = lean.movers[i];
-        const Rect from = lean.world.rect(id);
-        const Vec2 goal = from.position() + lean.velocity[i];
-        overlapsAtStart += lean.world.anyOverlap(from, id) ? 1u : 0u;
-        largeMovers += lean.world.grid().cellsHolding(from).count() > 4 ? 1u : 0u;
+        if (i % 2 == 1) options.trace = &trace;
+        const ItemId id = scene.movers[i];
+        const Rect from = scene.world.rect(id);
+        const Vec2 goal = from.position() + scene.velocity[i];
+        overlapsAtStart += scene.world.anyOverlap(from, id) ? 1u : 0u;
+        largeMovers += scene.world.grid().cellsHolding(from).count() > 4 ? 1u : 0u;
         asked.clear();
-        const MoveResult a = lean.world.move(id, goal, filter, options);
+        refAsked.clear();
+        const test::ReferenceResult ref = test::referenceMove(
+            scene.world, id, from, goal, Filter(refFilter), options.maxResponses, fns);
+        const MoveResult a = scene.world.move(id, goal, filter, options);
         const std::vector<Collision> ca(a.collisions.begin(), a.collisions.end());
-        const MoveResult b = full.world.move(full.movers[i], goal, tracedFilter, traced);
-        // Until the restore: which pairs a move asks about follows the order of the cells'
-        // entries, which a restored world rebuilds in slot order (a copy keeps it).
-        if (tick < 27) {
-          ASSERT_EQ(unasked, "") << "the traced move asked " << unasked << ", seed " << seed
-                                 << " tick " << tick << " mover " << i;
-        }
-        unasked.clear();
-        ASSERT_TRUE(same(a.position, b.position))
+        ASSERT_TRUE(same(a.position, ref.position))
             << "seed " << seed << " tick " << tick << " mover " << i;
-        ASSERT_EQ(differences(ca, b.collisions), "")
+        ASSERT_EQ(differences(ca, ref.collisions), "")
             << "seed " << seed << " tick " << tick << " mover " << i;
+        ASSERT_EQ(asked, refAsked) << "seed " << seed << " tick " << tick << " mover " << i;
         ++moves;
         collisions += ca.size();
         for (const Collision& c : ca) {  // turn back from what was hit
-          if (c.normal.x != 0) lean.velocity[i].x = -lean.velocity[i].x;
-          if (c.normal.y != 0) lean.velocity[i].y = -lean.velocity[i].y;
+          if (c.normal.x != 0) scene.velocity[i].x = -scene.velocity[i].x;
+          if (c.normal.y != 0) scene.velocity[i].y = -scene.velocity[i].y;
         }
       }
-      ASSERT_EQ(lean.world.stateHash(), full.world.stateHash()) << "seed " << seed;
       if (tick % 10 == 9) {
-        expectCellsExact(lean.world);
+        expectCellsExact(scene.world);
         if (HasFailure()) return;
       }
     }
-    expectCellsExact(lean.world);
-    expectCellsExact(full.world);
+    expectCellsExact(scene.world);
   }
   // The scenes did exercise what is compared: hits, starts inside something, large movers.
   EXPECT_GT(collisions, moves / 4);
@@ -276,48 +264,49 @@ TEST(NarrowMove, EveryMoveEqualsTheTracedFullPathBitForBit) {
   EXPECT_GT(largeMovers, 500u);
 }
 
-// An untraced move asks the filter about every pair its traced twin asks about: a recording made
-// untraced keeps the answers by pair, and the debugger steps it traced (the full path), so a pair
-// the traced move asks and the recording lacks is reported as a divergence. Cell 64:
+// The filter is asked about what the move meets, not in the order the cells list it. M drops
+// steeply onto F (leg 1) and slides left along it (leg 2), meeting A first and B, beyond A,
+// later. Cell 64:
 //
 //   x:  0         36   46     64 66         110 114
-//   y 20 +-----------------------+-----------[M]-+   M (4×4) drops steeply onto F (leg 1) and
-//        |                       |A          /   |   slides left along it (leg 2), meeting A
-//   y 40 |                       |A        /     |   first and B, beyond A, later.
-//   y 64 +-----------------------+A------/-------+   A (2×30) is in cells (1,0) and (1,1),
-//   y 66 |           [ B ]       |A    /         |   B in (0,1) only: the untraced move lists
-//   y 72 |[==========F===========|=============] |   A before B (row by row over the move's
-//   y 80 +-----------------------+---------------+   box); leg 2's own walk meets B first.
-TEST(NarrowMove, ATracedMoveAsksTheFilterNothingItsUntracedTwinDidNotAsk) {
-  const auto scene = [](World& w) {
-    const ItemId a = w.add({64, 40, 2, 30});
-    w.add({0, 72, 128, 8});  // F
-    w.add({36, 66, 10, 6});  // B
-    return std::pair{a, w.add({110, 20, 4, 4})};
-  };
-  World lean(64), full(64);
-  const auto [a, m] = scene(lean);
-  (void)scene(full);
-  std::set<std::uint32_t> asked;
-  const auto record = [&](ItemId, ItemId other) {
-    asked.insert(other.index);
-    return response::slide;
-  };
-  const MoveResult r = lean.move(m, {40, 100}, record);
-  ASSERT_EQ(r.collisions.size(), 2u);
-  EXPECT_EQ(r.collisions[0].normal, (Vec2{0, -1}));  // onto F
-  EXPECT_EQ(r.collisions[1].other, a);               // then against A
-  EXPECT_EQ(r.position, (Vec2{66, 68}));
-  if constexpr (!kTraceCompiledIn) GTEST_SKIP() << "tracing compiled out: no reference";
-  MoveTrace trace;
-  MoveOptions traced;
-  traced.trace = &trace;
-  const MoveResult t = full.move(m, {40, 100}, [](ItemId, ItemId) { return response::slide; },
-                                 traced);
-  EXPECT_EQ(t.position, (Vec2{66, 68}));
-  ASSERT_FALSE(trace.answers.empty());
-  for (const TraceAnswer& answer : trace.answers)
-    EXPECT_EQ(asked.count(answer.other.index), 1u) << "item " << answer.other.index;
+//   y 20 +-----------------------+-----------[M]-+   The move's box spans 2×2 cells: it is
+//        |                       |A          /   |   read once, and A (cells (1,0) and (1,1)),
+//   y 40 |                       |A        /     |   F and B are asked about in slot order,
+//   y 64 +-----------------------+A------/-------+   before anything is swept, traced or not,
+//   y 66 |           [ B ]       |A    /         |   in a world built in another order too.
+//   y 72 |[==========F===========|=============] |
+//   y 80 +-----------------------+---------------+
+TEST(ShortMove, AsksTheFilterAboutWhatItsBoxMeetsInSlotOrderTracedOrNot) {
+  for (const bool traced : {false, true}) {
+    for (const bool reversed : {false, true}) {
+      World w(64);
+      std::vector<Rect> rects = {{64, 40, 2, 30}, {0, 72, 128, 8}, {36, 66, 10, 6}};
+      if (reversed) {  // B, F, A added last first: other slots, other cells' order
+        std::reverse(rects.begin(), rects.end());
+      }
+      std::vector<ItemId> ids;
+      for (const Rect& r : rects) ids.push_back(w.add(r));
+      const ItemId m = w.add({110, 20, 4, 4});
+      std::vector<std::uint32_t> asked;
+      const auto record = [&](ItemId, ItemId other) {
+        asked.push_back(other.index);
+        return response::slide;
+      };
+      MoveTrace trace;
+      MoveOptions o;
+      if (traced) o.trace = &trace;
+      const MoveResult r = w.move(m, {40, 100}, record, o);
+      ASSERT_EQ(r.collisions.size(), 2u);
+      EXPECT_EQ(r.collisions[0].normal, (Vec2{0, -1}));                // onto F
+      EXPECT_EQ(r.collisions[1].otherRect, (Rect{64, 40, 2, 30}));     // then against A
+      EXPECT_EQ(r.position, (Vec2{66, 68}));
+      EXPECT_EQ(asked, (std::vector<std::uint32_t>{0, 1, 2})) << traced << reversed;
+      if (traced && kTraceCompiledIn) {
+        ASSERT_EQ(trace.answers.size(), 3u);
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(trace.answers[k].other.index, k);
+      }
+    }
+  }
 }
 
 // A leg that leaves the move's box is swept against everything, not against the items gathered
@@ -328,9 +317,9 @@ TEST(NarrowMove, ATracedMoveAsksTheFilterNothingItsUntracedTwinDidNotAsk) {
 //   -40      -16      0  8  20  36
 //                     |<-box->|        the box: x in [0, 24]
 //
-// The untraced move stops against L as its traced twin does; without L the recoil runs its
-// course to x = -20 (the control: the second leg does leave the box).
-TEST(NarrowMove, ALegThatLeavesTheBoxStillMeetsWhatLiesBeyondIt) {
+// The move stops against L as the reference does; without L the recoil runs its course to
+// x = -20 (the control: the second leg does leave the box).
+TEST(ShortMove, ALegThatLeavesTheBoxStillMeetsWhatLiesBeyondIt) {
   struct Setup {
     World world{16};
     ItemId mover, wall;
@@ -363,14 +352,12 @@ TEST(NarrowMove, ALegThatLeavesTheBoxStillMeetsWhatLiesBeyondIt) {
       EXPECT_EQ(ca.size(), 1u);
       EXPECT_EQ(a.position, (Vec2{-20, 4}));  // 12 - 2 * 16
     }
-    if constexpr (kTraceCompiledIn) {
-      MoveTrace trace;
-      MoveOptions traced;
-      traced.trace = &trace;
-      const MoveResult b = full.world.move(full.mover, {16, 4}, filter, traced);
-      EXPECT_TRUE(same(a.position, b.position));
-      EXPECT_EQ(differences(ca, b.collisions), "");
-    }
+    const test::ReferenceResult ref = test::referenceMove(
+        full.world, full.mover, full.world.rect(full.mover), {16, 4}, Filter(filter), 64,
+        std::vector<ResponseFn>{&touchResponse, &crossResponse, &slideResponse, &bounceResponse,
+                                &recoilResponse});
+    EXPECT_TRUE(same(a.position, ref.position));
+    EXPECT_EQ(differences(ca, ref.collisions), "");
   }
 }
 
