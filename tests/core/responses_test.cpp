@@ -228,6 +228,37 @@ TEST(CustomResponse, RegisteredByNameAndReturnedByAFilter) {
   EXPECT_EQ(r.position, (Vec2{10, 2}));
 }
 
+// A response registered with a context gets it back at every call: what a binding or a replay
+// keeps per world (its current call, its recorded legs) needs no global.
+struct Lift {
+  double rise = 0;
+  int calls = 0;
+};
+tv::Leg liftBy(void* context, const Collision& c, Vec2 /*goal*/) {
+  auto& lift = *static_cast<Lift*>(context);
+  ++lift.calls;
+  return {c.touch, c.touch + Vec2{0, -lift.rise}};
+}
+
+TEST(CustomResponse, ARegisteredContextIsHandedBackAtEveryCall) {
+  WallScene s;
+  Lift two{2, 0}, five{5, 0};
+  const ResponseId a = s.world.addResponse("lift 2", &liftBy, &two);
+  const ResponseId b = s.world.addResponse("lift 5", &liftBy, &five);
+  tv::MoveResult r = s.world.check(s.mover, WallScene::kGoal, tv::Filter::all(a));
+  EXPECT_EQ(r.position, (Vec2{10, 3}));
+  r = s.world.check(s.mover, WallScene::kGoal, tv::Filter::all(b));
+  EXPECT_EQ(r.position, (Vec2{10, 0}));
+  EXPECT_EQ(two.calls, 1);
+  EXPECT_EQ(five.calls, 1);
+  // A copy of the world shares the context (it is not owned).
+  World copy = s.world;
+  (void)copy.check(s.mover, WallScene::kGoal, tv::Filter::all(a));
+  EXPECT_EQ(two.calls, 2);
+  EXPECT_THROW((void)s.world.addResponse("none", tv::ResponseWithContextFn{nullptr}, &two),
+               tv::Error);
+}
+
 TEST(CustomResponse, FilterReturningAnUnregisteredIdThrowsAndChangesNothing) {
   WallScene s;
   const std::uint64_t before = s.world.stateHash();

@@ -60,6 +60,10 @@ struct Leg {
 /// A response: given the first collision of the current leg and that leg's goal, the next leg.
 /// It must not place the item inside `other`; starting the next leg at `c.touch` ensures that.
 using ResponseFn = Leg (*)(const Collision& c, Vec2 goal);
+/// A response with a context of its own, as a Filter's callable has: `context` is the pointer
+/// registered with it (World::addResponse(name, fn, context)), handed back at every call, so a
+/// binding or a replay finds its state there instead of in a global.
+using ResponseWithContextFn = Leg (*)(void* context, const Collision& c, Vec2 goal);
 
 /// The built-ins, exposed so custom responses can build on them.
 ///
