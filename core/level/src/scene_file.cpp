@@ -148,9 +148,10 @@ LevelBody readBody(const JsonAt& at) {
 
 sim::Solid readSolid(const JsonAt& at) {
   if (at.isArray()) return {at.rect(), 0};
-  onlyKeys(at, {"rect", "tag"});
+  onlyKeys(at, {"rect", "tag", "oneWay"});
   sim::Solid s{at["rect"].rect(), 0};
   if (auto t = at.find("tag")) s.tag = static_cast<std::uint8_t>(t->whole(0, 255));
+  if (auto v = at.find("oneWay")) s.oneWay = v->boolean();
   return s;
 }
 
@@ -296,7 +297,10 @@ std::string writeSceneFile(const Level& lv) {
       "solids", lv.solids.size(),
       [&](std::size_t i) {
         const sim::Solid& s = lv.solids[i];
-        return s.tag == 0 ? rectJson(s.rect) : Json{{"rect", rectJson(s.rect)}, {"tag", s.tag}};
+        if (s.tag == 0 && !s.oneWay) return rectJson(s.rect);
+        Json j = {{"rect", rectJson(s.rect)}, {"tag", s.tag}};
+        if (s.oneWay) j["oneWay"] = true;
+        return j;
       },
       false);
   list(

@@ -92,16 +92,19 @@ void Simulation::build(SceneSetup setup) {
   const std::size_t items = solids_.size() + bodies_.size();
   bodyBySlot_.assign(items, -1);
   tagBySlot_.assign(items, 0);
+  oneWayBySlot_.assign(items, 0);
   const auto grow = [&](ItemId id) {
     if (id.index >= bodyBySlot_.size()) {
       bodyBySlot_.resize(id.index + 1, -1);
       tagBySlot_.resize(id.index + 1, 0);
+      oneWayBySlot_.resize(id.index + 1, 0);
     }
   };
   for (const Solid& s : solids_) {
     const ItemId id = world_.add(s.rect);
     grow(id);
     tagBySlot_[id.index] = s.tag;
+    oneWayBySlot_[id.index] = s.oneWay ? 1 : 0;
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];
@@ -168,7 +171,7 @@ bool Simulation::finished() const {
 }
 
 TickContext Simulation::context(double dt) {
-  return {bodies_, counters_, world_, tick_, dt, previous_, bodyBySlot_, tagBySlot_};
+  return {bodies_, counters_, world_, tick_, dt, previous_, bodyBySlot_, tagBySlot_, oneWayBySlot_};
 }
 
 void Simulation::syncWorld(std::size_t i) {
@@ -224,6 +227,10 @@ ResponseId Simulation::respond(ItemId item, ItemId other) const {
   if (o >= 0 && bodies_[static_cast<std::size_t>(o)].oneWay &&
       !(body.rect.bottom() <= bodies_[static_cast<std::size_t>(o)].rect.y)) {
     return response::ignore;
+  }
+  if (o < 0 && other.index < oneWayBySlot_.size() && oneWayBySlot_[other.index] != 0 &&
+      !(body.rect.bottom() <= world_.rect(other).y)) {
+    return response::ignore;  // a one-way solid of the level
   }
   const std::uint32_t layer = o < 0 ? kLayerSolid : bodies_[static_cast<std::size_t>(o)].layer;
   return (body.mask & layer) != 0 ? body.response : response::ignore;

@@ -193,6 +193,7 @@ class Simulation {
   std::shared_ptr<const SceneRules> rules_;
   std::vector<std::int32_t> bodyBySlot_;
   std::vector<std::uint8_t> tagBySlot_;
+  std::vector<std::uint8_t> oneWayBySlot_;  // world slot -> 1 for a one-way solid
 
   Counters counters_;
   std::uint64_t tick_ = 0;
