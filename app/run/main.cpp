@@ -225,6 +225,9 @@ std::vector<Column> columnsFor(std::string_view scene, const std::vector<Row>& r
                                    {"jumps", &C::jumps},
                                    {"landings", &C::landings},
                                    {"respawns", &C::respawns},
+                                   {"drops", &C::drops},
+                                   {"pops", &C::pops},
+                                   {"squishes", &C::squishes},
                                    {"collisions", &C::collisions}};
   std::vector<Column> used;
   for (const Column& c : all) {

@@ -25,3 +25,23 @@ Leg bounceResponse(const Collision& c, Vec2 goal) {
 }
 
 }  // namespace tv
+
+namespace tv {
+
+Vec2 keepVelocity(Vec2 v, const Collision& /*c*/) { return v; }
+
+Vec2 stopVelocity(Vec2 /*v*/, const Collision& /*c*/) { return {}; }
+
+Vec2 slideVelocity(Vec2 v, const Collision& c) {
+  if (v.x * c.normal.x < 0.0) v.x = 0.0;
+  if (v.y * c.normal.y < 0.0) v.y = 0.0;
+  return v;
+}
+
+Vec2 reflectVelocity(Vec2 v, const Collision& c) {
+  if (v.x * c.normal.x < 0.0) v.x = -v.x;
+  if (v.y * c.normal.y < 0.0) v.y = -v.y;
+  return v;
+}
+
+}  // namespace tv

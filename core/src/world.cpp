@@ -74,10 +74,9 @@ double checkedCellSize(double cellSize) {
 }  // namespace
 
 World::World(double cellSize) : grid_(checkedCellSize(cellSize)), hash_(cellSize) {
-  responses_ = {{"touch", &touchResponse},
-                {"cross", &crossResponse},
-                {"slide", &slideResponse},
-                {"bounce", &bounceResponse}};
+  // The built-ins, from their one table, at their ids.
+  responses_.reserve(response::kBuiltinCount);
+  for (const ResponseDef& d : kBuiltinResponses) responses_.push_back({std::string(d.name), d.fn});
 }
 
 World::Hash::Hash(double cellSize) : p_(new detail::SpatialHash(cellSize)) {}
@@ -710,17 +709,26 @@ MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
 // [SECTION] responses ---------------------------------------------------------------------------
 
 ResponseId World::addResponse(std::string name, ResponseFn fn) {
+  if (fn == nullptr) fail("tv::World::addResponse", "response '" + name + "' has no function");
+  return addNamed({std::move(name), fn});
+}
+
+ResponseId World::addResponse(std::string name, ResponseWithContextFn fn, void* context) {
+  if (fn == nullptr) fail("tv::World::addResponse", "response '" + name + "' has no function");
+  return addNamed({std::move(name), nullptr, fn, context});
+}
+
+ResponseId World::addNamed(NamedResponse r) {
   constexpr std::string_view where = "tv::World::addResponse";
-  if (name.empty()) fail(where, "name must not be empty");
-  if (name == "ignore") {
+  if (r.name.empty()) fail(where, "name must not be empty");
+  if (r.name == "ignore") {
     fail(where, "the name 'ignore' is reserved for response::ignore (responseId(\"ignore\"))");
   }
-  if (fn == nullptr) fail(where, "response '" + name + "' has no function");
-  for (const auto& r : responses_) {
-    if (r.name == name) fail(where, "a response named '" + name + "' is already registered");
+  for (const auto& k : responses_) {
+    if (k.name == r.name) fail(where, "a response named '" + r.name + "' is already registered");
   }
   if (responses_.size() >= response::ignore) fail(where, "too many responses");
-  responses_.push_back({std::move(name), fn});
+  responses_.push_back(std::move(r));
   const auto id = static_cast<ResponseId>(responses_.size() - 1);
   if (observer_ && !observer_->busy()) observer_->responseAdded(responses_.back().name, id);
   return id;
@@ -738,7 +746,8 @@ Leg World::respond(const Collision& c, Vec2 goal) const {
   if (c.response >= responses_.size()) {
     fail("tv::World::respond", "response " + std::to_string(c.response) + " is not registered");
   }
-  const Leg leg = responses_[c.response].fn(c, goal);
+  const NamedResponse& r = responses_[c.response];
+  const Leg leg = r.withContext ? r.withContext(r.context, c, goal) : r.fn(c, goal);
   if (observer_ && c.response >= response::kBuiltinCount) [[unlikely]] {
     observer_->responded(c, goal, leg);
   }

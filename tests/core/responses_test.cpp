@@ -89,6 +89,59 @@ TEST(Bounce, BetweenTwoWallsReflectsAgain) {
   EXPECT_EQ(r.position, (Vec2{10, 0}));
 }
 
+// [SECTION] the table of built-ins ---------------------------------------------------------------
+
+TEST(BuiltinTable, AFreshWorldRegistersEveryEntryUnderItsNameAndPlace) {
+  World w;
+  for (ResponseId i = 0; i < response::kBuiltinCount; ++i) {
+    const tv::ResponseDef& def = tv::kBuiltinResponses[i];
+    EXPECT_EQ(w.responseName(i), def.name);
+    EXPECT_EQ(w.responseId(def.name), i);
+    EXPECT_EQ(tv::builtinResponseId(def.name), i);
+    EXPECT_FALSE(def.summary.empty()) << def.name;
+  }
+  // Not a built-in: "ignore" is the filter's answer, not a response; user names are the world's.
+  EXPECT_EQ(tv::builtinResponseId("ignore"), response::ignore);
+  EXPECT_EQ(tv::builtinResponseId("stick"), response::ignore);
+  EXPECT_THROW((void)w.responseName(response::kBuiltinCount), tv::Error);
+}
+
+TEST(BuiltinTable, TheWorldRunsEachEntrysFunctionForItsId) {
+  // The WallScene move under each built-in: the leg the world took is the one the table's
+  // function gives for the reported collision (its `target` is the next leg's goal).
+  for (ResponseId i = 0; i < response::kBuiltinCount; ++i) {
+    WallScene s;
+    const tv::MoveResult r = s.world.move(s.mover, WallScene::kGoal, tv::Filter::all(i));
+    ASSERT_FALSE(r.collisions.empty()) << tv::kBuiltinResponses[i].name;
+    const Collision& c = r.collisions[0];
+    EXPECT_EQ(c.response, i);
+    const tv::Leg leg = tv::kBuiltinResponses[i].fn(c, WallScene::kGoal);
+    EXPECT_EQ(c.target, leg.goal) << tv::kBuiltinResponses[i].name;
+  }
+}
+
+//   floor, normal (0,-1) (from the floor towards the body above it)
+//   a body falling right, v = (3, 4), meets it; one rising off it, v = (3, -4), is leaving it.
+TEST(BuiltinTable, VelocityRulesByName) {
+  Collision floorHit;
+  floorHit.normal = {0, -1};
+  const Vec2 falling{3, 4}, rising{3, -4};
+  const auto after = [&](std::string_view name, Vec2 v) {
+    floorHit.response = tv::builtinResponseId(name);
+    return tv::velocityAfter(v, floorHit);
+  };
+  EXPECT_EQ(after("touch", falling), (Vec2{0, 0}));
+  EXPECT_EQ(after("cross", falling), falling);
+  EXPECT_EQ(after("slide", falling), (Vec2{3, 0}));
+  EXPECT_EQ(after("bounce", falling), (Vec2{3, -4}));
+  // A component already leaving the obstacle is kept by every rule but touch's.
+  EXPECT_EQ(after("slide", rising), rising);
+  EXPECT_EQ(after("bounce", rising), rising);
+  // A user response keeps the velocity (the game applies its own rule).
+  floorHit.response = response::kBuiltinCount;
+  EXPECT_EQ(tv::velocityAfter(falling, floorHit), falling);
+}
+
 //   +----+   +---+        +---+
 //   | m  |-->| A |  ...   | B |     mover {0,0,10,10} -> (100,0)
 //   +----+   +---+        +---+     A {20,0,10,10} crossed at ti 0.1, B {50,0,10,10} slid on
@@ -173,6 +226,37 @@ TEST(CustomResponse, RegisteredByNameAndReturnedByAFilter) {
   EXPECT_EQ(r.collisions[0].response, lift);
   EXPECT_EQ(r.collisions[0].target, (Vec2{10, 2}));
   EXPECT_EQ(r.position, (Vec2{10, 2}));
+}
+
+// A response registered with a context gets it back at every call: what a binding or a replay
+// keeps per world (its current call, its recorded legs) needs no global.
+struct Lift {
+  double rise = 0;
+  int calls = 0;
+};
+tv::Leg liftBy(void* context, const Collision& c, Vec2 /*goal*/) {
+  auto& lift = *static_cast<Lift*>(context);
+  ++lift.calls;
+  return {c.touch, c.touch + Vec2{0, -lift.rise}};
+}
+
+TEST(CustomResponse, ARegisteredContextIsHandedBackAtEveryCall) {
+  WallScene s;
+  Lift two{2, 0}, five{5, 0};
+  const ResponseId a = s.world.addResponse("lift 2", &liftBy, &two);
+  const ResponseId b = s.world.addResponse("lift 5", &liftBy, &five);
+  tv::MoveResult r = s.world.check(s.mover, WallScene::kGoal, tv::Filter::all(a));
+  EXPECT_EQ(r.position, (Vec2{10, 3}));
+  r = s.world.check(s.mover, WallScene::kGoal, tv::Filter::all(b));
+  EXPECT_EQ(r.position, (Vec2{10, 0}));
+  EXPECT_EQ(two.calls, 1);
+  EXPECT_EQ(five.calls, 1);
+  // A copy of the world shares the context (it is not owned).
+  World copy = s.world;
+  (void)copy.check(s.mover, WallScene::kGoal, tv::Filter::all(a));
+  EXPECT_EQ(two.calls, 2);
+  EXPECT_THROW((void)s.world.addResponse("none", tv::ResponseWithContextFn{nullptr}, &two),
+               tv::Error);
 }
 
 TEST(CustomResponse, FilterReturningAnUnregisteredIdThrowsAndChangesNothing) {

@@ -127,6 +127,9 @@ TEST(MalformedScene, EachBadValueIsNamedByItsPath) {
                    {"s.json", "solids[1][2]", "-16"});
   expectSceneError(scene(R"("bodies": [{"rect": [0, 0, 8, 8], "motion": "teleport"}])"),
                    {"bodies[0].motion", "teleport", "fly, bullet, walker, player"});
+  // The valid responses are listed from the core's one table of built-ins.
+  expectSceneError(scene(R"("bodies": [{"rect": [0, 0, 8, 8], "response": "stick"}])"),
+                   {"bodies[0].response", "stick", "touch, cross, slide, bounce"});
   expectSceneError(scene(R"("bodies": [{"rect": [0, 0, 8, 8], "velocity": [1e300, 0]}])"),
                    {"bodies[0].velocity", "1e+300"});
   expectSceneError(scene(R"("bodies": [{"rect": [0, 0, 8, 8], "sped": 3}])"),

@@ -115,5 +115,21 @@ TEST(SceneFile, SpeedSetsWalkersWithoutTheirOwn) {
   EXPECT_EQ(s.bodies()[0].velocity.x, 100.0) << "the player has";
 }
 
+TEST(SceneFile, EveryBuiltinResponseIsNamedAsTheCoreNamesIt) {
+  // A body per entry of the core's table of built-in responses, written and read back.
+  for (ResponseId id = 0; id < response::kBuiltinCount; ++id) {
+    const std::string name(kBuiltinResponses[id].name);
+    const Level lv = parseSceneFile(
+        R"({"format": "tunnelvision-scene", "version": 1, "bodies": [{"rect": [0, 0, 8, 8],)"
+        R"( "response": ")" + name + R"("}]})",
+        "r.json");
+    ASSERT_EQ(lv.bodies.size(), 1u);
+    EXPECT_EQ(lv.bodies[0].body.response, id) << name;
+    const std::string written = writeSceneFile(lv);
+    EXPECT_NE(written.find('"' + name + '"'), std::string::npos) << written;
+    EXPECT_EQ(parseSceneFile(written, "again.json").bodies[0].body.response, id) << name;
+  }
+}
+
 }  // namespace
 }  // namespace tv::level

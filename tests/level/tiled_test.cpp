@@ -3,6 +3,7 @@
 // walker, bullet and spawner become bodies that walk on and are fired at the level.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "tv/error.hpp"
 #include "tv/level/level.hpp"
 #include "tv/level/tiled.hpp"
+#include "tv/mover.hpp"
 #include "tv/sim/simulation.hpp"
 
 namespace tv::level {
@@ -237,6 +239,68 @@ TEST(Tiled, NegativeControlTheDiscreteMoverTunnelsThroughTheSameWall) {
   sim::Simulation s(scene, scene.defaults(), parseMover("discrete"));
   s.run(60);
   EXPECT_GT(s.counters().tunnelled, 0u) << "128 px a tick through a 16 px wall";
+}
+
+// One-way tiles: a layer (or a tileset tile, or an object) with the bool property `oneway` is
+// solid from above only. A player on the floor jumps every 40 ticks, 5 tiles high, under a ledge
+// 3 tiles above the floor:
+//   y  48 . . . . . .
+//   y  64 . = = = = .      ledge: layer "ledges", oneway = true (row 4)
+//   y  80 . . . . . .
+//   y  96 . . . . . .
+//   y 112 # # # # # #      floor: layer "ground", collidable (row 7)
+//           P              player at x 36, standing on the floor
+std::string ledgeMap(const std::string& ledgeProperty) {
+  std::vector<std::uint32_t> floor(6 * 8, 0), ledge(6 * 8, 0);
+  for (int x = 0; x < 6; ++x) floor[7 * 6 + static_cast<std::size_t>(x)] = 1;
+  for (int x = 1; x < 5; ++x) ledge[4 * 6 + static_cast<std::size_t>(x)] = 1;
+  const std::string actors =
+      R"({"type": "objectgroup", "name": "actors", "objects": [)" +
+      object("player", R"("x": 42, "y": 112, "point": true)",
+             prop("speed", "float", "0") + "," + prop("jump", "float", "80") + "," +
+                 prop("every", "int", "40")) +
+      "]}";
+  return map(6, 8,
+             tileLayer("ground", 6, 8, tileData(floor, "csv"), collidable()) + "," +
+                 tileLayer("ledges", 6, 8, tileData(ledge, "csv"),
+                           R"("properties": [{"name": ")" + ledgeProperty +
+                               R"(", "type": "bool", "value": true}])") +
+                 "," + actors);
+}
+
+TEST(Tiled, AOneWayLayerIsJumpedUpThroughAndStoodOn) {
+  const Level lv = parseTiledMap(ledgeMap("oneway"), "ledge.tmj");
+  int oneWay = 0;
+  for (const sim::Solid& s : lv.solids) oneWay += s.oneWay ? 1 : 0;
+  EXPECT_EQ(oneWay, 4) << "the four ledge tiles, and not the floor";
+  const sim::SceneDef scene = makeScene(lv);
+  for (const std::string_view mover : moverNames()) {
+    if (mover == "discrete") continue;  // the negative control of every other test here
+    sim::Simulation s(scene, scene.defaults(), parseMover(mover));
+    bool onLedge = false;
+    for (int t = 0; t < 240; ++t) {
+      s.tick();
+      const Rect p = s.bodies()[0].rect;
+      if (onLedge) {
+        // It jumps again from the ledge and comes back to it: never below its top again.
+        EXPECT_LE(p.bottom(), 64.0) << mover << " tick " << t << ": fell through the ledge";
+      }
+      if (p.bottom() == 64.0 && s.bodies()[0].velocity.y == 0.0) onLedge = true;
+    }
+    EXPECT_TRUE(onLedge) << mover << ": jumped up through the ledge and landed on it";
+    EXPECT_EQ(s.counters().overlaps, 0u) << mover << ": inside the ledge is not inside a solid";
+  }
+}
+
+TEST(Tiled, NegativeControlACollidableLedgeStopsTheSameJump) {
+  const sim::SceneDef scene = makeScene(parseTiledMap(ledgeMap("collidable"), "ledge.tmj"));
+  sim::Simulation s(scene, scene.defaults(), parseMover("continuous"));
+  double highest = 1e9;
+  for (int t = 0; t < 240; ++t) {
+    s.tick();
+    highest = std::min(highest, s.bodies()[0].rect.y);
+  }
+  EXPECT_EQ(highest, 80.0) << "its head stops under the ledge (bottom of row 4)";
 }
 
 }  // namespace

@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "recording_kit.hpp"
@@ -41,7 +43,7 @@ TEST(RoundTrip, EveryCallKindReplaysWithZeroDivergencesAndEqualState) {
   EXPECT_EQ(replay.world().stateHash(), s.world.stateHash());
 
   // Every kind was exercised, so the test means what its name says.
-  std::vector<bool> seen(15, false);
+  std::vector<bool> seen(tv::kCallKindCount, false);
   for (std::uint64_t f = 0; f < replay.frames(); ++f) {
     for (const tv::CallInfo& c : replay.calls(f)) seen[static_cast<std::size_t>(c.kind)] = true;
   }
@@ -49,6 +51,33 @@ TEST(RoundTrip, EveryCallKindReplaysWithZeroDivergencesAndEqualState) {
     EXPECT_TRUE(seen[k]) << "no " << tv::callKindName(static_cast<tv::CallKind>(k))
                          << " call recorded";
   }
+}
+
+// The list of recorded calls (tv/record/calls.hpp) is the file format's: a kind's code is its
+// place in the list, names are unique, and the roles say which calls sweep.
+TEST(CallList, CodesNamesAndRolesComeFromTheOneList) {
+  std::vector<std::string_view> names;
+  for (std::size_t k = 0; k < tv::kCallKindCount; ++k) {
+    const auto kind = static_cast<tv::CallKind>(k);
+    const std::string_view name = tv::callKindName(kind);
+    EXPECT_EQ(std::count(names.begin(), names.end(), name), 0) << name << " is listed twice";
+    names.push_back(name);
+    EXPECT_FALSE(tv::callWords(kind).empty()) << name;
+  }
+  // Codes are the file's: appending keeps them, reordering would not (FORMAT.md).
+  EXPECT_EQ(static_cast<int>(tv::CallKind::add), 0);
+  EXPECT_EQ(static_cast<int>(tv::CallKind::move), 3);
+  EXPECT_EQ(static_cast<int>(tv::CallKind::moverMove), 11);
+  EXPECT_EQ(static_cast<int>(tv::CallKind::advance), 14);
+  EXPECT_EQ(tv::callKindName(static_cast<tv::CallKind>(tv::kCallKindCount)), "unknown");
+  // The debugger traces the calls that are one sweep, and only those.
+  std::vector<std::string_view> sweeps;
+  for (std::size_t k = 0; k < tv::kCallKindCount; ++k) {
+    if (tv::isOneSweep(static_cast<tv::CallKind>(k)))
+      sweeps.push_back(tv::callKindName(static_cast<tv::CallKind>(k)));
+  }
+  EXPECT_EQ(sweeps, (std::vector<std::string_view>{"move", "check", "project", "moverMove"}));
+  EXPECT_EQ(tv::callWords(tv::CallKind::batchStep), "Batch::step");
 }
 
 TEST(RoundTrip, ResultsEqualTheGameBitForBitCallByCall) {

@@ -303,6 +303,9 @@ void countersContents(const Session& session) {
       {"jumps", c.jumps, false, false},
       {"landings", c.landings, false, false},
       {"respawns", c.respawns, false, false},
+      {"drops", c.drops, false, true},
+      {"pops", c.pops, false, true},
+      {"squishes", c.squishes, false, false},
       {"moves", c.moves, true, false},
       {"collisions", c.collisions, true, false},
   };

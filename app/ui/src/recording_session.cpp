@@ -8,8 +8,7 @@
 namespace tv::ui {
 
 bool tracesAMove(CallKind k) {
-  return k == CallKind::move || k == CallKind::check || k == CallKind::project ||
-         k == CallKind::moverMove;
+  return isOneSweep(k);
 }
 
 RecordingSession::RecordingSession(Replay replay, std::string name)

@@ -269,19 +269,6 @@ void traceDetails(const RecordingSession& s, const MoveTrace& m) {
   }
 }
 
-// A call as the game wrote it: the recording's names for the calls on a Mover and a Batch
-// ("moverMove") are its own, not the library's.
-std::string callWords(CallKind k) {
-  switch (k) {
-    case CallKind::moverMove:
-      return "Mover::move";
-    case CallKind::batchStep:
-      return "Batch::step";
-    default:
-      return std::string(callKindName(k));
-  }
-}
-
 }  // namespace
 
 void recordingInspectorContents(const RecordingSession& s) {
@@ -294,7 +281,7 @@ void recordingInspectorContents(const RecordingSession& s) {
   if (s.call()) {
     const CallInfo& c = s.calls()[*s.call()];
     ImGui::Text("call %u of frame %" PRIu64 ": %s", c.index, c.frame,
-                callWords(c.kind).c_str());
+                std::string(tv::callWords(c.kind)).c_str());
     ImGui::TextWrapped("%s", c.summary.c_str());
     if (c.item.valid()) {
       const std::string cat = s.replay().category(c.item);
@@ -312,7 +299,7 @@ void recordingInspectorContents(const RecordingSession& s) {
       ImGui::TextColored(colour(pal::kDim), "%u results recorded (a query sweeps nothing)", c.hits);
     } else if (!s.traces(c)) {
       ImGui::TextColored(colour(pal::kDim), "nothing is swept by %s, so there is no trace",
-                         callWords(c.kind).c_str());
+                         std::string(tv::callWords(c.kind)).c_str());
     }
     return;
   }

@@ -2,7 +2,10 @@
 /// Collision records and responses, in the manner of bump.lua: a filter picks a response for
 /// each (item, other) pair; the response turns the first collision of a leg into the next leg.
 
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 
@@ -11,17 +14,18 @@
 
 namespace tv {
 
-/// A response by number: the built-ins below, then those `World::addResponse` registers.
+/// A response by number: the built-ins (kBuiltinResponses, below), then those
+/// `World::addResponse` registers.
 using ResponseId = std::uint16_t;
 
-/// The built-in responses. Users register more with `World::addResponse`.
+/// The built-in responses' ids: their places in kBuiltinResponses (checked below). Users register
+/// more with `World::addResponse`.
 namespace response {
 inline constexpr ResponseId touch = 0;   ///< stop at the contact
 inline constexpr ResponseId cross = 1;   ///< report, pass through, keep going
 inline constexpr ResponseId slide = 2;   ///< stop on the normal's axis, keep the other
 inline constexpr ResponseId bounce = 3;  ///< reflect the rest of the move about the normal
 inline constexpr ResponseId ignore = 0xFFFF;  ///< from a filter: the pair does not interact
-inline constexpr ResponseId kBuiltinCount = 4;  ///< ids from here on are user responses
 }  // namespace response
 
 /// One collision, with everything the debugger draws.
@@ -56,6 +60,10 @@ struct Leg {
 /// A response: given the first collision of the current leg and that leg's goal, the next leg.
 /// It must not place the item inside `other`; starting the next leg at `c.touch` ensures that.
 using ResponseFn = Leg (*)(const Collision& c, Vec2 goal);
+/// A response with a context of its own, as a Filter's callable has: `context` is the pointer
+/// registered with it (World::addResponse(name, fn, context)), handed back at every call, so a
+/// binding or a replay finds its state there instead of in a global.
+using ResponseWithContextFn = Leg (*)(void* context, const Collision& c, Vec2 goal);
 
 /// The built-ins, exposed so custom responses can build on them.
 ///
@@ -71,6 +79,64 @@ using ResponseFn = Leg (*)(const Collision& c, Vec2 goal);
 [[nodiscard]] Leg slideResponse(const Collision& c, Vec2 goal);
 /// From the touch point, the rest of the move reflected about the surface.
 [[nodiscard]] Leg bounceResponse(const Collision& c, Vec2 goal);
+
+/// What a collision does to a body's velocity (any unit per time, returned in the same): the
+/// rule a game, and tv::sim, applies beside the response that moved the body. A component already
+/// leaving the obstacle is always kept, so a body pushed out of an overlap is not sent back in.
+using VelocityFn = Vec2 (*)(Vec2 velocity, const Collision& c);
+
+/// Leaves the velocity alone (cross, and user responses unless they say otherwise).
+[[nodiscard]] Vec2 keepVelocity(Vec2 v, const Collision& c);
+/// Stops the body: zero velocity (touch).
+[[nodiscard]] Vec2 stopVelocity(Vec2 v, const Collision& c);
+/// Zeroes the component along the normal when it points into the obstacle (slide).
+[[nodiscard]] Vec2 slideVelocity(Vec2 v, const Collision& c);
+/// Reverses the component along the normal when it points into the obstacle (bounce).
+[[nodiscard]] Vec2 reflectVelocity(Vec2 v, const Collision& c);
+
+/// One built-in response: everything any part of the project needs to know about it.
+struct ResponseDef {
+  std::string_view name;     ///< what filters, scene files, recordings and Lua call it
+  ResponseFn fn;             ///< the next leg of a move (see ResponseFn)
+  VelocityFn velocity;       ///< what it does to a body's velocity
+  std::string_view summary;  ///< one line, for documentation and the debugger
+};
+
+/// The built-in responses, by ResponseId: the one list that the world registers, the recording
+/// format checks names against, scene files and the Lua module look names up in, and tv::sim
+/// takes velocity rules from. A new built-in is one entry here.
+inline constexpr ResponseDef kBuiltinResponses[] = {
+    {"touch", &touchResponse, &stopVelocity, "stop at the contact"},
+    {"cross", &crossResponse, &keepVelocity, "report the contact and pass through"},
+    {"slide", &slideResponse, &slideVelocity, "stop on the normal's axis, keep moving along it"},
+    {"bounce", &bounceResponse, &reflectVelocity, "reflect the rest of the move about the normal"},
+};
+
+namespace response {
+/// Ids from here on are user responses.
+inline constexpr ResponseId kBuiltinCount = static_cast<ResponseId>(std::size(kBuiltinResponses));
+}  // namespace response
+
+static_assert(kBuiltinResponses[response::touch].name == "touch" &&
+                  kBuiltinResponses[response::cross].name == "cross" &&
+                  kBuiltinResponses[response::slide].name == "slide" &&
+                  kBuiltinResponses[response::bounce].name == "bounce",
+              "the response ids are the table's order");
+
+/// The built-in named `name`, or response::ignore when no built-in is ("ignore" itself is not a
+/// response: see World::responseId).
+[[nodiscard]] constexpr ResponseId builtinResponseId(std::string_view name) {
+  for (std::size_t i = 0; i < std::size(kBuiltinResponses); ++i) {
+    if (kBuiltinResponses[i].name == name) return static_cast<ResponseId>(i);
+  }
+  return response::ignore;
+}
+
+/// The velocity after a collision, by its response's rule: a built-in's from kBuiltinResponses;
+/// any other response keeps it.
+[[nodiscard]] inline Vec2 velocityAfter(Vec2 v, const Collision& c) {
+  return c.response < response::kBuiltinCount ? kBuiltinResponses[c.response].velocity(v, c) : v;
+}
 
 /// Chooses the response for a pair, or `response::ignore`. A non-owning reference to any
 /// callable `ResponseId(ItemId item, ItemId other)`; the default makes everything slide. It

@@ -196,6 +196,10 @@ class World {
   /// Registers a response that filters can then return. Names must be unique and non-empty,
   /// and not "ignore" (the special response::ignore).
   ResponseId addResponse(std::string name, ResponseFn fn);
+  /// The same for a response that takes a context: `fn(context, collision, goal)` at every
+  /// call. `context` is not owned: it must outlive the world's use of the response (a copy of
+  /// the world shares it).
+  ResponseId addResponse(std::string name, ResponseWithContextFn fn, void* context);
   /// The name a response was registered under ("slide"...); throws tv::Error for an unknown id.
   [[nodiscard]] std::string_view responseName(ResponseId id) const;
   /// Runs the response `c.response` on a collision: the next leg of the move.
@@ -405,8 +409,11 @@ class World {
 
   struct NamedResponse {
     std::string name;
-    ResponseFn fn;
+    ResponseFn fn = nullptr;                      // a response without a context, or
+    ResponseWithContextFn withContext = nullptr;  // one with `context`
+    void* context = nullptr;
   };
+  ResponseId addNamed(NamedResponse r);
   std::vector<NamedResponse> responses_;
   detail::ObserverLink observer_;  // a copy of a world reports to no one
 

@@ -203,7 +203,7 @@ sim::SceneDef makeScene(Level level) {
     s.solids.clear();
     s.solids.reserve(lv.solids.size());
     for (const sim::Solid& solid : lv.solids)
-      s.solids.push_back({shifted(solid.rect, by), solid.tag});
+      s.solids.push_back({shifted(solid.rect, by), solid.tag, solid.oneWay});
     s.bodies.clear();
     s.bodies.reserve(lv.bodies.size());
     for (const LevelBody& b : lv.bodies) {

@@ -43,8 +43,13 @@ class LevelRules final : public sim::SceneRules {
                  std::span<const Collision> cols) const override {
     sim::Body& b = ctx.bodies[i];
     const BodyRule& r = bodies_[i];
-    const auto solidsOnly = [&ctx](ItemId, ItemId other) {
-      return ctx.bodyOf(other) < 0 ? response::touch : response::ignore;
+    // Inside a one-way solid is where a body jumping up through it is: not an overlap. Its top
+    // is ground only to a body standing on it (not one passing through).
+    const auto blocking = [&ctx, &b](ItemId, ItemId other) {
+      if (ctx.bodyOf(other) >= 0) return response::ignore;
+      if (ctx.isOneWay(other) && !(b.rect.bottom() <= ctx.world.rect(other).y))
+        return response::ignore;
+      return response::touch;
     };
     const bool hitSolid = std::any_of(cols.begin(), cols.end(),
                                       [&](const Collision& c) { return ctx.bodyOf(c.other) < 0; });
@@ -63,6 +68,7 @@ class LevelRules final : public sim::SceneRules {
       for (const ItemId other : ctx.world.queryRect(hull, b.item)) {
         if (ctx.bodyOf(other) >= 0) continue;
         const Rect s = ctx.world.rect(other);
+        if (ctx.isOneWay(other) && !(before.bottom() <= s.y)) continue;  // passed from below
         const Rect grown{s.x - half.x, s.y - half.y, s.w + b.rect.w, s.h + b.rect.h};
         if (clipSegment(c0, c1, grown).hit) {
           tunnelled = true;
@@ -80,7 +86,7 @@ class LevelRules final : public sim::SceneRules {
         b.active = false;
       }
     }
-    if (ctx.world.anyOverlap(b.rect, b.item, solidsOnly)) ++ctx.counters.overlaps;
+    if (ctx.world.anyOverlap(b.rect, b.item, blocking)) ++ctx.counters.overlaps;
     if (r.motion != Motion::walker && r.motion != Motion::player) return;
     for (const Collision& c : cols) {
       if (c.normal.x > 0.0) b.state &= ~kFacingLeft;
@@ -88,7 +94,7 @@ class LevelRules final : public sim::SceneRules {
     }
     // Grounded is asked of the world (a solid right under the feet), as the platformer does.
     const Rect feet{b.rect.x, b.rect.bottom(), b.rect.w, 1.0};
-    const bool grounded = b.velocity.y >= 0.0 && ctx.world.anyOverlap(feet, b.item, solidsOnly);
+    const bool grounded = b.velocity.y >= 0.0 && ctx.world.anyOverlap(feet, b.item, blocking);
     if (grounded && (b.state & kGrounded) == 0) ++ctx.counters.landings;
     b.state = grounded ? (b.state | kGrounded) : (b.state & ~kGrounded);
     if (r.motion == Motion::player && b.rect.y > killY_) {

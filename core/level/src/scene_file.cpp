@@ -39,11 +39,12 @@ constexpr std::array<std::pair<std::string_view, sim::BodyRole>, 7> kRoles = {
      {"player", sim::BodyRole::player},
      {"crowd", sim::BodyRole::crowd},
      {"block", sim::BodyRole::block}}};
-constexpr std::array<std::pair<std::string_view, ResponseId>, 4> kResponses = {
-    {{"touch", response::touch},
-     {"cross", response::cross},
-     {"slide", response::slide},
-     {"bounce", response::bounce}}};
+// The built-in responses by name, from the one table of them (tv/response.hpp).
+constexpr auto kResponses = [] {
+  std::array<std::pair<std::string_view, ResponseId>, response::kBuiltinCount> a{};
+  for (ResponseId i = 0; i < response::kBuiltinCount; ++i) a[i] = {kBuiltinResponses[i].name, i};
+  return a;
+}();
 
 template <class T, std::size_t N>
 T byName(const std::array<std::pair<std::string_view, T>, N>& names, const JsonAt& at,
@@ -85,7 +86,7 @@ std::uint32_t bits(const JsonAt& at) {
 
 LevelBody readBody(const JsonAt& at) {
   onlyKeys(at, {"rect", "motion", "velocity", "speed", "direction", "jump", "falls", "response",
-                "role", "layer", "mask", "group", "state", "active"});
+                "role", "layer", "mask", "group", "state", "active", "solid", "oneWay"});
   LevelBody lb;
   sim::Body& b = lb.body;
   b.rect = at["rect"].rect();
@@ -133,6 +134,8 @@ LevelBody readBody(const JsonAt& at) {
   if (auto v = at.find("falls")) b.falls = v->boolean();
   if (auto v = at.find("response")) b.response = byName(kResponses, *v, "response");
   if (auto v = at.find("role")) b.role = byName(kRoles, *v, "role");
+  if (auto v = at.find("solid")) b.solid = v->boolean();
+  if (auto v = at.find("oneWay")) b.oneWay = v->boolean();
   if (auto v = at.find("layer")) b.layer = bits(*v);
   if (auto v = at.find("mask")) b.mask = bits(*v);
   if (auto v = at.find("group")) b.group = bits(*v);
@@ -145,9 +148,10 @@ LevelBody readBody(const JsonAt& at) {
 
 sim::Solid readSolid(const JsonAt& at) {
   if (at.isArray()) return {at.rect(), 0};
-  onlyKeys(at, {"rect", "tag"});
+  onlyKeys(at, {"rect", "tag", "oneWay"});
   sim::Solid s{at["rect"].rect(), 0};
   if (auto t = at.find("tag")) s.tag = static_cast<std::uint8_t>(t->whole(0, 255));
+  if (auto v = at.find("oneWay")) s.oneWay = v->boolean();
   return s;
 }
 
@@ -242,6 +246,9 @@ Json bodyJson(const LevelBody& lb) {
   j["group"] = b.group;
   j["state"] = b.state;
   j["active"] = b.active;
+  // Written only when set, so that files of levels without them read as they always did.
+  if (b.solid) j["solid"] = true;
+  if (b.oneWay) j["oneWay"] = true;
   return j;
 }
 
@@ -290,7 +297,10 @@ std::string writeSceneFile(const Level& lv) {
       "solids", lv.solids.size(),
       [&](std::size_t i) {
         const sim::Solid& s = lv.solids[i];
-        return s.tag == 0 ? rectJson(s.rect) : Json{{"rect", rectJson(s.rect)}, {"tag", s.tag}};
+        if (s.tag == 0 && !s.oneWay) return rectJson(s.rect);
+        Json j = {{"rect", rectJson(s.rect)}, {"tag", s.tag}};
+        if (s.oneWay) j["oneWay"] = true;
+        return j;
       },
       false);
   list(

@@ -65,8 +65,16 @@ std::string lower(std::string s) {
 struct Tileset {
   std::uint32_t firstGid = 1;
   std::uint32_t count = 0;
-  std::vector<std::uint32_t> solidIds;  // sorted local ids whose tile is collidable
-  bool allSolid = false;                // the tileset's own `collidable` property
+  std::vector<std::uint32_t> solidIds;   // sorted local ids whose tile is collidable
+  std::vector<std::uint32_t> oneWayIds;  // sorted local ids whose tile is one-way
+  bool allSolid = false;                 // the tileset's own `collidable` property
+  bool allOneWay = false;                // the tileset's own `oneway` property
+};
+
+// What a tile is: not solid, solid, or solid from above only (`oneway`, which implies solid).
+struct TileKind {
+  bool solid = false;
+  bool oneWay = false;
 };
 
 Tileset readTileset(const JsonAt& ts, std::uint32_t firstGid) {
@@ -74,15 +82,18 @@ Tileset readTileset(const JsonAt& ts, std::uint32_t firstGid) {
   t.firstGid = firstGid;
   t.count = static_cast<std::uint32_t>(ts["tilecount"].whole(0, kFlipBits - 1));
   t.allSolid = flag(ts, "collidable");
+  t.allOneWay = flag(ts, "oneway");
   if (auto tiles = ts.find("tiles")) {
     const std::size_t n = tiles->size();
     for (std::size_t i = 0; i < n; ++i) {
       const JsonAt tile = tiles->at(i);
       const auto id = static_cast<std::uint32_t>(tile["id"].whole(0, kFlipBits - 1));
       if (flag(tile, "collidable")) t.solidIds.push_back(id);
+      if (flag(tile, "oneway")) t.oneWayIds.push_back(id);
     }
   }
   std::sort(t.solidIds.begin(), t.solidIds.end());
+  std::sort(t.oneWayIds.begin(), t.oneWayIds.end());
   return t;
 }
 
@@ -90,8 +101,9 @@ struct Tilesets {
   std::vector<Tileset> sets;  // by firstGid
   std::uint32_t end = 1;      // one past the last gid any tileset covers
 
-  /// Whether `gid` (flags masked) is collidable; throws naming `at` when no tileset holds it.
-  bool solid(std::uint32_t gid, const JsonAt& at, const std::string& where) const {
+  /// Whether `gid` (flags masked) is collidable, or one-way; throws naming `at` when no tileset
+  /// holds it.
+  TileKind kind(std::uint32_t gid, const JsonAt& at, const std::string& where) const {
     auto it = std::upper_bound(sets.begin(), sets.end(), gid,
                                [](std::uint32_t g, const Tileset& t) { return g < t.firstGid; });
     if (it == sets.begin() || gid - std::prev(it)->firstGid >= std::prev(it)->count) {
@@ -99,7 +111,12 @@ struct Tilesets {
                    " is in no tileset (they hold gids 1 to " + std::to_string(end - 1) + ")");
     }
     const Tileset& t = *std::prev(it);
-    return t.allSolid || std::binary_search(t.solidIds.begin(), t.solidIds.end(), gid - t.firstGid);
+    const std::uint32_t id = gid - t.firstGid;
+    TileKind k;
+    k.oneWay = t.allOneWay || std::binary_search(t.oneWayIds.begin(), t.oneWayIds.end(), id);
+    k.solid = k.oneWay || t.allSolid ||
+              std::binary_search(t.solidIds.begin(), t.solidIds.end(), id);
+    return k;
   }
 };
 
@@ -207,21 +224,21 @@ void checkCoordinate(const JsonAt& at, double v) {
 
 /// Adds the solid tiles of one block whose top-left tile is (x0, y0) in tiles.
 void addBlock(MapContext& m, const JsonAt& data, std::int64_t x0, std::int64_t y0, std::int64_t w,
-              std::int64_t h, Vec2 offset, bool layerSolid) {
+              std::int64_t h, Vec2 offset, bool layerSolid, bool layerOneWay) {
   const std::vector<std::uint32_t> gids = readGids(data, w, h, m.encoding, m.compression);
   for (std::size_t i = 0; i < gids.size(); ++i) {
     const std::uint32_t gid = gids[i];
     if (gid == 0) continue;
     const std::string where = m.encoding == "csv" ? "" : "tile " + std::to_string(i) + ": ";
     const JsonAt at = m.encoding == "csv" ? data.at(i) : data;
-    const bool tileSolid = m.tilesets.solid(gid, at, where);
-    if (!layerSolid && !tileSolid) continue;
+    const TileKind tile = m.tilesets.kind(gid, at, where);
+    if (!layerSolid && !layerOneWay && !tile.solid) continue;
     const auto col = x0 + static_cast<std::int64_t>(i) % w;
     const auto row = y0 + static_cast<std::int64_t>(i) / w;
     const Rect r{offset.x + static_cast<double>(col) * m.tileW,
                  offset.y + static_cast<double>(row) * m.tileH, m.tileW, m.tileH};
     checkCoordinate(at, std::max(std::abs(r.x), std::abs(r.y)) + std::max(r.w, r.h));
-    m.level->solids.push_back({r, 1});
+    m.level->solids.push_back({r, 1, layerOneWay || tile.oneWay});
   }
 }
 
@@ -233,6 +250,7 @@ bool namedSolid(const MapContext& m, const std::string& name) {
 void readTileLayer(MapContext& m, const JsonAt& layer, Vec2 offset, bool infinite) {
   const std::string name = layer.has("name") ? layer["name"].string() : "";
   const bool layerSolid = flag(layer, "collidable") || namedSolid(m, name);
+  const bool layerOneWay = flag(layer, "oneway");
   m.encoding = "csv";
   m.compression.clear();
   if (auto e = layer.find("encoding")) {
@@ -258,14 +276,14 @@ void readTileLayer(MapContext& m, const JsonAt& layer, Vec2 offset, bool infinit
       const std::int64_t y = c["y"].whole(-kMaxSide * 64, kMaxSide * 64);
       const std::int64_t w = c["width"].whole(1, kMaxSide);
       const std::int64_t h = c["height"].whole(1, kMaxSide);
-      addBlock(m, c["data"], x, y, w, h, offset, layerSolid);
+      addBlock(m, c["data"], x, y, w, h, offset, layerSolid, layerOneWay);
     }
     return;
   }
   const std::int64_t w = layer["width"].whole(0, kMaxSide);
   const std::int64_t h = layer["height"].whole(0, kMaxSide);
   if (w == 0 || h == 0) return;
-  addBlock(m, layer["data"], 0, 0, w, h, offset, layerSolid);
+  addBlock(m, layer["data"], 0, 0, w, h, offset, layerSolid, layerOneWay);
 }
 
 // [SECTION] objects -------------------------------------------------------------------------------
@@ -328,7 +346,8 @@ void readWalker(LevelBody& lb, const JsonAt& o) {
   }
 }
 
-void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid) {
+void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid,
+                bool layerOneWay) {
   std::string cls;
   if (auto c = o.find("class")) cls = c->string();
   if (cls.empty()) {
@@ -388,7 +407,8 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid) {
     }
     return;
   }
-  const bool solid = layerSolid || flag(o, "collidable");
+  const bool oneWay = layerOneWay || flag(o, "oneway");
+  const bool solid = layerSolid || oneWay || flag(o, "collidable");
   if (!solid) return;
   if (!shape.empty())
     o.failPlain("unsupported: a collidable " + shape + " (only rectangles can be solid)");
@@ -400,7 +420,7 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid) {
   if (!(w > 0 && h > 0)) o.failPlain("a collidable rectangle needs width and height > 0");
   const Rect r = objectRect(o, offset, 0.0, false);
   checkCoordinate(o, std::max(std::abs(r.x), std::abs(r.y)) + std::max(r.w, r.h));
-  lv.solids.push_back({r, 2});
+  lv.solids.push_back({r, 2, oneWay});
 }
 
 // [SECTION] the map -------------------------------------------------------------------------------
@@ -420,9 +440,10 @@ void readLayers(MapContext& m, const JsonAt& layers, Vec2 offset, bool infinite,
     } else if (type == "objectgroup") {
       const std::string name = layer.has("name") ? layer["name"].string() : "";
       const bool solid = flag(layer, "collidable") || namedSolid(m, name);
+      const bool oneWay = flag(layer, "oneway");
       const JsonAt objects = layer["objects"];
       const std::size_t k = objects.size();
-      for (std::size_t j = 0; j < k; ++j) readObject(m, objects.at(j), at, solid);
+      for (std::size_t j = 0; j < k; ++j) readObject(m, objects.at(j), at, solid, oneWay);
     } else if (type == "group") {
       readLayers(m, layer["layers"], at, infinite, depth + 1);
     } else if (type != "imagelayer") {

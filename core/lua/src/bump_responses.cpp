@@ -111,11 +111,18 @@ int bounce(lua_State* L) { return redirect(L, true); }
 
 }  // namespace
 
+namespace {
+// bump's own response functions, by ResponseId: one for each built-in of the core's table.
+constexpr lua_CFunction kBumpFunctions[] = {guarded<touch>, guarded<cross>, guarded<slide>,
+                                            guarded<bounce>};
+static_assert(std::size(kBumpFunctions) == tv::response::kBuiltinCount,
+              "every built-in response (tv::kBuiltinResponses) has bump's function here");
+}  // namespace
+
 bool isBuiltinResponse(lua_CFunction f, tv::ResponseId& id) {
   if (f == nullptr) return false;
-  const lua_CFunction fns[] = {guarded<touch>, guarded<cross>, guarded<slide>, guarded<bounce>};
-  for (tv::ResponseId i = 0; i < 4; ++i) {
-    if (f == fns[i]) {
+  for (tv::ResponseId i = 0; i < tv::response::kBuiltinCount; ++i) {
+    if (f == kBumpFunctions[i]) {
       id = i;
       return true;
     }
@@ -124,15 +131,14 @@ bool isBuiltinResponse(lua_CFunction f, tv::ResponseId& id) {
 }
 
 void pushResponseFunctions(lua_State* L) {
-  lua_createtable(L, 0, 4);
-  lua_pushcfunction(L, guarded<touch>);
-  lua_setfield(L, -2, "touch");
-  lua_pushcfunction(L, guarded<cross>);
-  lua_setfield(L, -2, "cross");
-  lua_pushcfunction(L, guarded<slide>);
-  lua_setfield(L, -2, "slide");
-  lua_pushcfunction(L, guarded<bounce>);
-  lua_setfield(L, -2, "bounce");
+  lua_createtable(L, 0, tv::response::kBuiltinCount);
+  for (tv::ResponseId i = 0; i < tv::response::kBuiltinCount; ++i) {
+    lua_pushcfunction(L, kBumpFunctions[i]);
+    const std::string_view name = tv::kBuiltinResponses[i].name;
+    lua_pushlstring(L, name.data(), name.size());
+    lua_insert(L, -2);
+    lua_rawset(L, -3);
+  }
 }
 
 }  // namespace tvlua

@@ -256,17 +256,11 @@ void pushCollision(lua_State* L, int worldIdx, int slotToItem, int itemIdx, cons
 
 // [SECTION] calls into Lua -----------------------------------------------------------------------
 
-namespace {
-thread_local CallContext* tlsCall = nullptr;
+CallScope::CallScope(CallContext& c) : c_(c) {
+  c.outer = c.world->current;
+  c.world->current = &c;
 }
-
-CallContext* currentCall() { return tlsCall; }
-
-CallScope::CallScope(CallContext& c) {
-  c.outer = tlsCall;
-  tlsCall = &c;
-}
-CallScope::~CallScope() { tlsCall = tlsCall->outer; }
+CallScope::~CallScope() { c_.world->current = c_.outer; }
 
 tv::ResponseId LuaFilter::operator()(tv::ItemId item, tv::ItemId other) const {
   CallContext& k = *call;
@@ -285,8 +279,8 @@ tv::ResponseId LuaFilter::operator()(tv::ItemId item, tv::ItemId other) const {
   return answerToResponse(L, *k.world, k.worldIdx);
 }
 
-tv::Leg luaResponse(const tv::Collision& c, tv::Vec2 goal) {
-  CallContext* k = currentCall();
+tv::Leg luaResponse(void* world, const tv::Collision& c, tv::Vec2 goal) {
+  CallContext* k = static_cast<LuaWorld*>(world)->current;
   if (k == nullptr) throw tv::Error("a response added from Lua ran outside a Lua call");
   lua_State* L = k->L;
   pushEnv(L, k->worldIdx, kIdToFn);
@@ -396,8 +390,6 @@ int worldToString(lua_State* L) {
   return 1;
 }
 
-const char* const kBuiltinNames[tv::response::kBuiltinCount] = {"touch", "cross", "slide",
-                                                                 "bounce"};
 
 }  // namespace
 
@@ -463,10 +455,11 @@ int newWorld(lua_State* L) {
   lua_rawgeti(L, 4, kNameToId);
   lua_rawgeti(L, 4, kIdToName);
   for (int i = 0; i < tv::response::kBuiltinCount; ++i) {
-    lua_pushstring(L, kBuiltinNames[i]);
+    const std::string_view name = tv::kBuiltinResponses[i].name;
+    lua_pushlstring(L, name.data(), name.size());
     lua_pushnumber(L, i);
     lua_rawset(L, -4);
-    lua_pushstring(L, kBuiltinNames[i]);
+    lua_pushlstring(L, name.data(), name.size());
     lua_rawseti(L, -2, i);
   }
   lua_pop(L, 2);

@@ -76,6 +76,8 @@ class BumpCells {
   std::unordered_set<std::uint64_t, Hash> emptied_;
 };
 
+struct CallContext;
+
 struct LuaWorld {
   static constexpr std::uint64_t kMagic = 0x74766C7561776F72ull;
   explicit LuaWorld(double cellSize) : world(cellSize), cells(cellSize) {}
@@ -85,6 +87,9 @@ struct LuaWorld {
 
   std::uint64_t magic = kMagic;
   tv::World world;
+  /// The Lua call on this world that is running (its filter, item, stack slots), innermost
+  /// first through `outer`: what a response added from Lua reads (CallScope sets it).
+  CallContext* current = nullptr;
   /// bump.lua's rules for move, check, project and the queries (`tunnelvision.bump` worlds);
   /// false: the core's (`tunnelvision` worlds, or after setMover).
   bool bumpRules = true;
@@ -203,14 +208,17 @@ struct CallContext {
   tv::Vec2 projectedFrom;
   CallContext* outer = nullptr;
 };
-CallContext* currentCall();
-/// Installs `c` as the current call until destroyed (nests: a filter may move another world).
+/// Installs `c` as its world's current call until destroyed (nests: a filter may move the same
+/// world or another). `c.world` must be set.
 class CallScope {
  public:
   explicit CallScope(CallContext& c);
   ~CallScope();
   CallScope(const CallScope&) = delete;
   CallScope& operator=(const CallScope&) = delete;
+
+ private:
+  CallContext& c_;
 };
 
 /// The filter of a move, check or project: calls the Lua function `filter(item, other)` (or
@@ -222,8 +230,8 @@ struct LuaFilter {
 };
 
 /// The core response that runs a response added from Lua (bump's signature:
-/// fn(world, col, x,y,w,h, goalX, goalY, filter) -> goalX, goalY).
-tv::Leg luaResponse(const tv::Collision& c, tv::Vec2 goal);
+/// fn(world, col, x,y,w,h, goalX, goalY, filter) -> goalX, goalY); its context is the LuaWorld.
+tv::Leg luaResponse(void* world, const tv::Collision& c, tv::Vec2 goal);
 
 // Registration (module.cpp builds the tables from these).
 void registerWorldMethods(lua_State* L, int methodsIdx);   // bump's World API

@@ -298,8 +298,8 @@ int project(lua_State* L) {
   if (w.bumpRules) {
     // A response added from Lua, projecting its item inside a move: where it projects from is
     // where the move's next leg starts.
-    CallContext* outer = currentCall();
-    if (outer != nullptr && outer->inResponse && outer->world == &w && self.valid() &&
+    CallContext* outer = w.current;
+    if (outer != nullptr && outer->inResponse && self.valid() &&
         self == outer->item) {
       outer->projected = true;
       outer->projectedFrom = r.position();
@@ -487,9 +487,8 @@ int addResponse(lua_State* L) {
   if (known && id < tv::response::kBuiltinCount && isBuiltinFn && builtin == id) {
     return 0;  // re-adding a built-in under its own name
   }
-  const char* const builtinNames[] = {"touch", "cross", "slide", "bounce"};
   if (known && id >= tv::response::kBuiltinCount && isBuiltinFn &&
-      std::string_view(lua_tostring(L, 2)) == builtinNames[builtin]) {
+      std::string_view(lua_tostring(L, 2)) == tv::kBuiltinResponses[builtin].name) {
     // A built-in given back its own name: the core's built-in again.
     lua_pushvalue(L, 2);
     lua_pushnumber(L, builtin);
@@ -506,7 +505,7 @@ int addResponse(lua_State* L) {
   // calls the Lua function. The core's names are unique; a replaced built-in keeps its own.
   std::string coreName = lua_tostring(L, 2);
   if (known) coreName += " (from Lua)";
-  const tv::ResponseId fresh = w.world.addResponse(coreName, luaResponse);
+  const tv::ResponseId fresh = w.world.addResponse(coreName, luaResponse, &w);
   lua_pushvalue(L, 3);
   lua_rawseti(L, 5, fresh);
   lua_pushvalue(L, 2);

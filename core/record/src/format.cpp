@@ -14,6 +14,8 @@
 
 namespace tv::rec {
 
+static_assert(kCallKindCount <= 16, "a call's kind is the low 4 bits of its first byte");
+
 namespace {
 
 constexpr std::uint8_t kindOf(CallKind k) {
@@ -39,12 +41,16 @@ double contactPrediction(double itemPos, double itemSize, double otherPos, doubl
   return itemPos;
 }
 
+// Responses with a code of their own in collisions and answers (FORMAT.md): the four built-ins
+// that version 1.0 had. Any other id is written out as a varint.
+constexpr ResponseId kCodedResponses = 4;
+
 std::uint8_t responseCode(ResponseId r) {
-  return r < response::kBuiltinCount ? static_cast<std::uint8_t>(r) : 4;
+  return r < kCodedResponses ? static_cast<std::uint8_t>(r) : 4;
 }
 
 std::uint8_t answerCode(ResponseId r) {
-  if (r < response::kBuiltinCount) return static_cast<std::uint8_t>(r);
+  if (r < kCodedResponses) return static_cast<std::uint8_t>(r);
   return r == response::ignore ? 4 : 5;
 }
 
@@ -681,7 +687,7 @@ void readCollisions(In& in, Model& m, Call& c, std::size_t n, ItemId self, const
       col.response = rc;
     } else {
       const std::uint64_t r = in.varint("collision response");
-      if (r < response::kBuiltinCount || r >= m.responses.size()) {
+      if (r < kCodedResponses || r >= m.responses.size()) {
         in.fail("collision response " + std::to_string(r) + " is not registered");
       }
       col.response = static_cast<ResponseId>(r);
@@ -772,7 +778,7 @@ void readAnswers(In& in, Model& m, Call& c, ItemId subject) {
         break;
       case 5: {
         const std::uint64_t r = in.varint("answer response");
-        if (r < response::kBuiltinCount || r >= m.responses.size()) {
+        if (r < kCodedResponses || r >= m.responses.size()) {
           in.fail("answer response " + std::to_string(r) + " is not registered");
         }
         a.response = static_cast<ResponseId>(r);
@@ -878,10 +884,9 @@ void decodeKeyframe(In& in, Model& m, WorldState& s, std::uint64_t maxCells) {
   if (nresp < response::kBuiltinCount || nresp >= response::ignore) {
     in.fail("keyframe response count " + std::to_string(nresp) + " is out of range");
   }
-  static constexpr std::string_view kBuiltins[] = {"touch", "cross", "slide", "bounce"};
   for (std::size_t k = 0; k < nresp; ++k) {
     s.responses.push_back(in.str("response name", kMaxName));
-    if (k < response::kBuiltinCount && s.responses.back() != kBuiltins[k]) {
+    if (k < response::kBuiltinCount && s.responses.back() != kBuiltinResponses[k].name) {
       in.fail("built-in response " + std::to_string(k) + " is named '" + s.responses.back() + "'");
     }
     if (s.responses.back().empty()) in.fail("an empty response name");
@@ -946,7 +951,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.maxEvents = kDefaultMaxEvents;
   const std::uint8_t kb = in.u8("call kind");
   const std::uint8_t kindBits = kb & 0x0F;
-  if (kindBits > kindOf(CallKind::advance)) {
+  if (kindBits >= kCallKindCount) {
     in.failAt(c.offset, "unknown call kind " + std::to_string(kindBits));
   }
   c.kind = static_cast<CallKind>(kindBits);

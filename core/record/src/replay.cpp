@@ -29,42 +29,6 @@ std::string readableSeconds(double s) {
 }
 }  // namespace
 
-std::string_view callKindName(CallKind k) {
-  switch (k) {
-    case CallKind::add:
-      return "add";
-    case CallKind::remove:
-      return "remove";
-    case CallKind::update:
-      return "update";
-    case CallKind::move:
-      return "move";
-    case CallKind::check:
-      return "check";
-    case CallKind::project:
-      return "project";
-    case CallKind::queryRect:
-      return "queryRect";
-    case CallKind::queryPoint:
-      return "queryPoint";
-    case CallKind::querySegment:
-      return "querySegment";
-    case CallKind::anyOverlap:
-      return "anyOverlap";
-    case CallKind::addResponse:
-      return "addResponse";
-    case CallKind::moverMove:
-      return "moverMove";
-    case CallKind::batchStep:
-      return "batchStep";
-    case CallKind::label:
-      return "label";
-    case CallKind::advance:
-      return "advance";
-  }
-  return "unknown";
-}
-
 std::string Divergence::report() const {
   std::string s = "divergence at frame " + std::to_string(frame) + ", call " +
                   std::to_string(call) + " (" + std::string(callKindName(kind));
@@ -285,15 +249,11 @@ void Replay::Impl::moveLength(std::size_t k, Vec2 d) {
 void Replay::Impl::tally(
     const rec::Call& c, std::uint64_t f,
     std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers) {
-  switch (c.kind) {
-    case CallKind::label: {
-      labels[c.item] = {c.name, c.category};
+  switch (callRole(c.kind)) {
+    case CallRole::note:
+      if (c.kind == CallKind::label) labels[c.item] = {c.name, c.category};
       return;
-    }
-    case CallKind::advance:
-      return;
-    case CallKind::move:
-    case CallKind::moverMove: {
+    case CallRole::move: {
       ++summary.moves;
       const std::size_t k = itemFor(c.item, f);
       markMoving(k);
@@ -303,7 +263,7 @@ void Replay::Impl::tally(
       moveLength(k, c.position - c.start.position());
       break;
     }
-    case CallKind::batchStep:
+    case CallRole::batch:
       summary.moves += c.bodies.size();
       for (const rec::BodyOut& b : c.bodies) {
         const std::size_t k = itemFor(b.item, f);
@@ -314,18 +274,17 @@ void Replay::Impl::tally(
         moveLength(k, b.position - b.start.position());
       }
       break;
-    case CallKind::update: {
+    case CallRole::item: {
       const std::size_t k = itemFor(c.item, f);
-      if (!(c.rect == c.start)) markMoving(k);
+      if (c.kind == CallKind::update && !(c.rect == c.start)) markMoving(k);
       break;
     }
-    case CallKind::add:
-    case CallKind::remove:
-      itemFor(c.item, f);
-      break;
-    default:
+    case CallRole::sweep:
+    case CallRole::query:
+    case CallRole::setup:
       ++summary.queries;
       if (c.item.valid()) itemFor(c.item, f);
+      break;
   }
   ++summary.calls;
   summary.collisions += c.collisions.size();

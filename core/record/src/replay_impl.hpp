@@ -65,6 +65,7 @@ struct Replay::Impl {
 
   // Where the replay is.
   std::unique_ptr<World> world;
+  rec::LegCursor legs;  // the recorded legs of the call being replayed (its user responses')
   rec::Model model;
   rec::In in;
   rec::Call call;

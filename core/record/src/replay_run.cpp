@@ -11,11 +11,10 @@ namespace tv {
 namespace rec {
 namespace {
 
-thread_local LegCursor tLegs;
-
-// Registered under every recorded user response's name: hands back the recorded legs in order.
-Leg replayedResponse(const Collision& c, Vec2 goal) {
-  LegCursor& cur = tLegs;
+// Registered under every recorded user response's name, with the replay's own cursor as its
+// context: hands back the recorded legs in order.
+Leg replayedResponse(void* context, const Collision& c, Vec2 goal) {
+  LegCursor& cur = *static_cast<LegCursor*>(context);
   if (!cur.whatIf && cur.legs && cur.next < cur.legs->size()) return (*cur.legs)[cur.next++];
   if (!cur.whatIf) cur.overrun = true;
   return slideResponse(c, goal);
@@ -161,7 +160,7 @@ ResponseId Replay::Impl::fallbackAnswer(ItemId item, ItemId other) const {
 void Replay::Impl::restoreWorld(const WorldState& ws) {
   auto w = std::make_unique<World>(cellSize);
   for (std::size_t i = response::kBuiltinCount; i < ws.responses.size(); ++i) {
-    w->addResponse(ws.responses[i], &rec::replayedResponse);
+    w->addResponse(ws.responses[i], &rec::replayedResponse, &legs);
   }
   try {
     w->restore(ws);
@@ -273,10 +272,11 @@ std::optional<Divergence> Replay::Impl::replayMove(MoveTrace* trace, bool compar
   rec::Call& c = call;
   ReplayFilter rf{c, *this, true, 0, {}};
   const Filter filter(rf);
-  rec::tLegs = {&c.legs, 0, false, false};
+  legs = {&c.legs, 0, false, false};
   struct ResetLegs {
-    ~ResetLegs() { rec::tLegs = {}; }
-  } resetLegs;
+    rec::LegCursor& cursor;
+    ~ResetLegs() { cursor = {}; }
+  } resetLegs{legs};
   MoveResult r;
   try {
     if (c.kind == CallKind::move) {
@@ -296,7 +296,7 @@ std::optional<Divergence> Replay::Impl::replayMove(MoveTrace* trace, bool compar
     return out;
   }
   if (!compare) return std::nullopt;
-  const bool legsAgree = !rec::tLegs.overrun && rec::tLegs.next == c.legs.size();
+  const bool legsAgree = !legs.overrun && legs.next == c.legs.size();
   if (sameMove(r.position, r.collisions, c.position, c.collisions) && rf.mismatch.empty() &&
       legsAgree) [[likely]] {
     return std::nullopt;
@@ -306,7 +306,7 @@ std::optional<Divergence> Replay::Impl::replayMove(MoveTrace* trace, bool compar
   if (!rf.mismatch.empty()) setDivergence(out, index, "filter", "not asked", rf.mismatch);
   if (!legsAgree) {
     setDivergence(out, index, "user response legs", std::to_string(c.legs.size()),
-                  rec::tLegs.overrun ? "more" : std::to_string(rec::tLegs.next));
+                  legs.overrun ? "more" : std::to_string(legs.next));
   }
   return out;
 }
@@ -354,10 +354,11 @@ std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool comp
   const bool exact = !whatIf();
   ReplayFilter rf{c, *this, exact, 0, {}};
   const Filter filter(rf);
-  rec::tLegs = {&c.legs, 0, false, !exact};
+  legs = {&c.legs, 0, false, !exact};
   struct ResetLegs {
-    ~ResetLegs() { rec::tLegs = {}; }
-  } resetLegs;
+    rec::LegCursor& cursor;
+    ~ResetLegs() { cursor = {}; }
+  } resetLegs{legs};
 
   // What-if: one move by the other mover, measured against the recording.
   const auto whatIfMove = [&](ItemId item, Vec2 goal, Vec2 recorded) {
@@ -510,7 +511,7 @@ std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool comp
         break;
       }
       case CallKind::addResponse:
-        world->addResponse(c.name, &rec::replayedResponse);
+        world->addResponse(c.name, &rec::replayedResponse, &legs);
         break;
       case CallKind::batchStep: {
         batchMoves.clear();
@@ -553,9 +554,9 @@ std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool comp
   }
   if (!compare || !exact) return std::nullopt;
   if (!rf.mismatch.empty()) diverge("filter", "not asked", rf.mismatch);
-  if (rec::tLegs.overrun || rec::tLegs.next != c.legs.size()) {
+  if (legs.overrun || legs.next != c.legs.size()) {
     diverge("user response legs", std::to_string(c.legs.size()),
-            rec::tLegs.overrun ? "more" : std::to_string(rec::tLegs.next));
+            legs.overrun ? "more" : std::to_string(legs.next));
   }
   return out;
 }

@@ -236,14 +236,9 @@ void StreamReader::decodeFrame(LiveFrame& f, const std::uint8_t* payload, std::u
   while (!in.done()) {
     decodeCall(in, model_, call_, limits_.maxCells);
     ++f.calls;
+    if (callRole(call_.kind) == CallRole::move) ++f.moves;
+    if (callRole(call_.kind) == CallRole::batch) f.moves += call_.bodies.size();
     switch (call_.kind) {
-      case CallKind::move:
-      case CallKind::moverMove:
-        ++f.moves;
-        break;
-      case CallKind::batchStep:
-        f.moves += call_.bodies.size();
-        break;
       case CallKind::remove: {
         const auto it = labels_.find(call_.item);
         if (it != labels_.end()) {

@@ -11,20 +11,7 @@ namespace tv::sim {
 // [SECTION] velocity responses --------------------------------------------------------------------
 
 Vec2 respondVelocity(Vec2 v, const Collision& c) {
-  switch (c.response) {
-    case response::touch:
-      return {};
-    case response::slide:
-      if (v.x * c.normal.x < 0.0) v.x = 0.0;
-      if (v.y * c.normal.y < 0.0) v.y = 0.0;
-      return v;
-    case response::bounce:
-      if (v.x * c.normal.x < 0.0) v.x = -v.x;
-      if (v.y * c.normal.y < 0.0) v.y = -v.y;
-      return v;
-    default:
-      return v;
-  }
+  return velocityAfter(v, c);  // the response's own rule (kBuiltinResponses)
 }
 
 Vec2 respondVelocity(Vec2 v, std::span<const Collision> collisions) {
@@ -87,6 +74,7 @@ const SceneRegistry& builtinScenes() {
     detail::registerProjectileScenes(r);
     detail::registerRestingScenes(r);
     detail::registerGameScenes(r);
+    detail::registerPlatformScenes(r);
     return r;
   }();
   return registry;

@@ -58,5 +58,6 @@ Body makeBody(Rect r, BodyRole role, std::uint32_t layer, std::uint32_t mask, Re
 void registerProjectileScenes(SceneRegistry& r);
 void registerRestingScenes(SceneRegistry& r);
 void registerGameScenes(SceneRegistry& r);
+void registerPlatformScenes(SceneRegistry& r);
 
 }  // namespace tv::sim::detail

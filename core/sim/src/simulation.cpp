@@ -10,6 +10,7 @@
 #include <string>
 
 #include "tv/error.hpp"
+#include "tv/solid.hpp"
 
 namespace tv::sim {
 
@@ -91,16 +92,19 @@ void Simulation::build(SceneSetup setup) {
   const std::size_t items = solids_.size() + bodies_.size();
   bodyBySlot_.assign(items, -1);
   tagBySlot_.assign(items, 0);
+  oneWayBySlot_.assign(items, 0);
   const auto grow = [&](ItemId id) {
     if (id.index >= bodyBySlot_.size()) {
       bodyBySlot_.resize(id.index + 1, -1);
       tagBySlot_.resize(id.index + 1, 0);
+      oneWayBySlot_.resize(id.index + 1, 0);
     }
   };
   for (const Solid& s : solids_) {
     const ItemId id = world_.add(s.rect);
     grow(id);
     tagBySlot_[id.index] = s.tag;
+    oneWayBySlot_[id.index] = s.oneWay ? 1 : 0;
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];
@@ -167,7 +171,7 @@ bool Simulation::finished() const {
 }
 
 TickContext Simulation::context(double dt) {
-  return {bodies_, counters_, world_, tick_, dt, previous_, bodyBySlot_, tagBySlot_};
+  return {bodies_, counters_, world_, tick_, dt, previous_, bodyBySlot_, tagBySlot_, oneWayBySlot_};
 }
 
 void Simulation::syncWorld(std::size_t i) {
@@ -194,7 +198,11 @@ void Simulation::stepOrThrow(double dt) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
   traceValid_ = false;
   TickContext ctx = context(dt);
-  if (rules_) rules_->control(ctx);
+  if (rules_) {
+    rules_->control(ctx);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) syncWorld(i);  // a teleport by the rules
+  }
+  moveSolids(dt);
   if (rules_ && rules_->batched()) {
     moveBatched(ctx, dt);
   } else {
@@ -209,20 +217,51 @@ void Simulation::stepOrThrow(double dt) {
 }
 
 // The filter every move uses: a body meets what its mask shares a bit with, by its response.
+// A one-way body is met only by a body that was entirely above it when its move began: the
+// bodies' rects are where this tick's moves began (they are written back after each move).
 ResponseId Simulation::respond(ItemId item, ItemId other) const {
   const std::int32_t a = item.index < bodyBySlot_.size() ? bodyBySlot_[item.index] : -1;
   const std::int32_t o = other.index < bodyBySlot_.size() ? bodyBySlot_[other.index] : -1;
   if (a < 0) return response::ignore;
   const Body& body = bodies_[static_cast<std::size_t>(a)];
+  if (o >= 0 && bodies_[static_cast<std::size_t>(o)].oneWay &&
+      !(body.rect.bottom() <= bodies_[static_cast<std::size_t>(o)].rect.y)) {
+    return response::ignore;
+  }
+  if (o < 0 && other.index < oneWayBySlot_.size() && oneWayBySlot_[other.index] != 0 &&
+      !(body.rect.bottom() <= world_.rect(other).y)) {
+    return response::ignore;  // a one-way solid of the level
+  }
   const std::uint32_t layer = o < 0 ? kLayerSolid : bodies_[static_cast<std::size_t>(o)].layer;
   return (body.mask & layer) != 0 ? body.response : response::ignore;
+}
+
+void Simulation::moveSolids(double dt) {
+  riders_.clear();
+  bool any = false;
+  for (const Body& b : bodies_) {
+    if (!b.solid) riders_.push_back(b.item);
+    any = any || (b.solid && b.active);
+  }
+  if (!any) return;
+  const auto filter = [this](ItemId item, ItemId other) { return respond(item, other); };
+  for (Body& b : bodies_) {
+    if (!b.solid || !b.active) continue;
+    SolidOptions o;
+    o.bodies = riders_;
+    o.filter = filter;
+    o.oneWay = b.oneWay;
+    const SolidMove m = moveSolid(world_, b.item, b.rect.position() + b.velocity * dt, o);
+    counters_.squishes += m.squished.size();
+    for (Body& x : bodies_) x.rect = world_.rect(x.item);
+  }
 }
 
 void Simulation::moveOneByOne(TickContext& ctx, double dt) {
   const auto filter = [this](ItemId item, ItemId other) { return respond(item, other); };
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];
-    if (!b.active) continue;
+    if (!b.active || b.solid) continue;
     if (b.falls) b.velocity = b.velocity + gravity_ * dt;
     const Vec2 goal = b.rect.position() + b.velocity * dt;
     const bool traced = traced_ && *traced_ == i;
@@ -246,7 +285,7 @@ void Simulation::moveBatched(TickContext& ctx, double dt) {
   batchBodies_.clear();
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];
-    if (!b.active) continue;
+    if (!b.active || b.solid) continue;
     if (b.falls) b.velocity = b.velocity + gravity_ * dt;
     batchMoves_.push_back({b.item, b.rect.position() + b.velocity * dt});
     batchBodies_.push_back(i);
@@ -358,7 +397,7 @@ std::uint64_t Simulation::stateHash() const {
   const Counters& c = counters_;
   for (const std::uint64_t v :
        {c.moves, c.collisions, c.hits, c.tunnelled, c.farPushOuts, c.misses, c.escapes, c.overlaps,
-        c.jitter, c.snags, c.jumps, c.landings, c.respawns}) {
+        c.jitter, c.snags, c.jumps, c.landings, c.respawns, c.drops, c.pops, c.squishes}) {
     h.add(v);
   }
   return h.h;

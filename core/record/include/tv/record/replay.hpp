@@ -20,19 +20,11 @@
 
 #include "tv/error.hpp"  // what they throw
 #include "tv/mover.hpp"
+#include "tv/record/calls.hpp"  // CallKind, the recorded calls
 #include "tv/trace.hpp"
 #include "tv/world.hpp"
 
 namespace tv {
-
-/// What a recorded call was: a World call (add ... anyOverlap, addResponse), a Mover::move, a
-/// Batch::step, a Recorder::label or a FixedStep advance (a frame's start).
-enum class CallKind : std::uint8_t {
-  add, remove, update, move, check, project, queryRect, queryPoint, querySegment, anyOverlap,
-  addResponse, moverMove, batchStep, label, advance,
-};
-/// The call kind as the tools print it: "move", "queryRect", "moverMove"...
-[[nodiscard]] std::string_view callKindName(CallKind k);
 
 /// One recorded call, as listed in the debugger's frame view.
 struct CallInfo {

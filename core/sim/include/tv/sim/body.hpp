@@ -35,6 +35,12 @@ struct Body {
   std::int32_t state = 0;            ///< scene-defined, changes: walk direction, contact flags...
   bool falls = false;                ///< gravity applies
   bool active = true;                ///< moves each tick; false once it is done (stopped, resolved)
+  /// A moving solid (a lift, a platform): moved by tv::moveSolid, before the other bodies each
+  /// tick, carrying the bodies that ride it and pushing those in its way, instead of by the mover.
+  bool solid = false;
+  /// Solid from above only (a jump-through platform): a body meets it only if it was entirely
+  /// above it when its move began; as a moving solid, it pushes nothing from below.
+  bool oneWay = false;
 };
 
 /// What the scenes count. Each scene documents which counters it uses and what they mean;
@@ -55,6 +61,9 @@ struct Counters {
   std::uint64_t jumps = 0;        ///< platformer: jumps taken
   std::uint64_t landings = 0;     ///< platformer: landings after a jump or fall
   std::uint64_t respawns = 0;     ///< platformer: falls out of the level
+  std::uint64_t drops = 0;        ///< platforms: riders that ended a tick below their platform's top
+  std::uint64_t pops = 0;         ///< platforms: riders that ended a tick above it, not on it
+  std::uint64_t squishes = 0;     ///< bodies a moving solid could not push out of its way
 
   /// Equal when every counter is.
   friend bool operator==(const Counters&, const Counters&) = default;

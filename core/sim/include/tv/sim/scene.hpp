@@ -31,6 +31,9 @@ namespace tv::sim {
 struct Solid {
   Rect rect;             ///< where it is, px
   std::uint8_t tag = 0;  ///< scene-defined kind (0 by default)
+  /// Solid from above only (a jump-through platform): a body meets it only if it was entirely
+  /// above it when its move began.
+  bool oneWay = false;
 };
 
 class SceneRules;
@@ -54,10 +57,15 @@ struct TickContext {
   std::span<const Vec2> previous;            ///< every body's position before this tick
   std::span<const std::int32_t> bodyBySlot;  ///< world slot -> body index, or -1 for a solid
   std::span<const std::uint8_t> tagBySlot;   ///< world slot -> the solid's tag (0 for bodies)
+  std::span<const std::uint8_t> oneWayBySlot;  ///< world slot -> 1 for a one-way solid
 
   /// Index of the body whose item this is, or -1 (a solid).
   [[nodiscard]] std::int32_t bodyOf(ItemId id) const {
     return id.index < bodyBySlot.size() ? bodyBySlot[id.index] : -1;
+  }
+  /// True for a one-way solid (Solid::oneWay) of the scene.
+  [[nodiscard]] bool isOneWay(ItemId id) const {
+    return id.index < oneWayBySlot.size() && oneWayBySlot[id.index] != 0;
   }
   /// Tag of the solid this is (0 for bodies and unknown items).
   [[nodiscard]] std::uint8_t tagOf(ItemId id) const {

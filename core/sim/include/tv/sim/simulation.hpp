@@ -4,6 +4,8 @@
 ///
 /// A tick, for each active body in body order (unless the scene is batched):
 ///   1. the scene's rules steer (set velocities) — once per tick, before anything moves;
+///      then the bodies that are moving solids (Body::solid) move, by tv::moveSolid, carrying
+///      and pushing the others (which the mover then moves as below);
 ///   2. gravity: v += g·dt for bodies that fall;
 ///   3. the mover moves the body towards position + v·dt, its filter choosing the body's
 ///      response for every solid and every body its mask meets (others are ignored);
@@ -122,6 +124,11 @@ class Simulation {
   [[nodiscard]] std::span<const Body> bodies() const { return bodies_; }  ///< scene order
   [[nodiscard]] std::span<const Solid> solids() const { return solids_; }  ///< scene order
   [[nodiscard]] const World& world() const { return world_; }  ///< the world the bodies move in
+  /// Reports every call the simulation makes on its world to `observer` from now on (a
+  /// tv::Recorder records the scene; see World::attach), until `detach`.
+  void attach(WorldObserver& observer) { world_.attach(observer); }
+  /// Stops reporting to the observer given to `attach`.
+  void detach() { world_.detach(); }
   [[nodiscard]] const SceneDef& scene() const { return scene_; }  ///< the scene it runs
   [[nodiscard]] const Params& params() const { return params_; }  ///< its parameters
   /// The mover's spec as used (maxStep resolved).
@@ -162,6 +169,7 @@ class Simulation {
   void stepOrThrow(double dt);
   void moveOneByOne(TickContext& ctx, double dt);
   void moveBatched(TickContext& ctx, double dt);
+  void moveSolids(double dt);  // the bodies that are moving solids, by tv::moveSolid
   void record();
   void restore(std::uint64_t t);
   void syncWorld(std::size_t i);
@@ -185,6 +193,7 @@ class Simulation {
   std::shared_ptr<const SceneRules> rules_;
   std::vector<std::int32_t> bodyBySlot_;
   std::vector<std::uint8_t> tagBySlot_;
+  std::vector<std::uint8_t> oneWayBySlot_;  // world slot -> 1 for a one-way solid
 
   Counters counters_;
   std::uint64_t tick_ = 0;
@@ -200,6 +209,7 @@ class Simulation {
   TraceStats traceStats_;
 
   std::vector<BatchMove> batchMoves_;
+  std::vector<ItemId> riders_;  // every body that is not a moving solid
   std::vector<std::size_t> batchBodies_;
 };
 
