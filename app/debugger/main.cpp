@@ -20,6 +20,7 @@
 #include "tv/sim/scene.hpp"
 #include "tv/ui/palette.hpp"
 #include "tv/ui/recording_still.hpp"
+#include "tv/ui/what_if_view.hpp"
 #include "tv/ui/still.hpp"
 
 namespace tv::viewer {
@@ -138,9 +139,25 @@ int interactive(const ViewerOptions& o) {
   debugger.setPinned(shot);
   if (o.recording) {
     RecordingDebugger& r = debugger.openRecording(o.recording->path);
-    r.show(o.recording->frame, o.recording->call, o.recording->item);
+    std::uint64_t frame = o.recording->frame;
+    std::optional<std::uint32_t> call = o.recording->call;
+    const std::optional<MoverSpec>& whatIf = o.recording->whatIf;
+    if (whatIf && o.recording->firstFailure) {
+      // The moment to open at needs the whole re-run: run it once here, before the window.
+      const WhatIfReport report =
+          ui::runWhatIf(o.recording->path, *whatIf, o.recording->updatesAsMoves);
+      if (const auto f = ui::firstFailure(report)) {
+        frame = f->frame;
+        call = f->call;
+      } else {
+        std::cerr << "tv-debugger: under " << ui::moverLabel(*whatIf)
+                  << " no recorded move tunnelled or ended inside a solid; opening at frame "
+                  << frame << "\n";
+      }
+    }
+    r.show(frame, call, o.recording->item);
     r.setView(o.picture);
-    if (o.recording->whatIf) r.startWhatIf(*o.recording->whatIf, o.recording->updatesAsMoves);
+    if (whatIf) r.startWhatIf(*whatIf, o.recording->updatesAsMoves);
     if (!loaded && !shot) r.openHelp();
   }
   WindowConfig config{o.picture.width, o.picture.height, "Tunnelvision debugger", shot};
@@ -225,6 +242,9 @@ int main(int argc, char** argv) {
   } catch (const tv::ui::UsageError& e) {
     std::cerr << "tv-debugger: " << e.message << "\n(see tv-debugger --help)\n";
     return tv::viewer::kUsageExit;
+  } catch (const tv::ui::NoFailure& e) {
+    std::cerr << "tv-debugger: " << e.message << ": nothing to show, no image written\n";
+    return 0;
   } catch (const std::exception& e) {
     std::cerr << "tv-debugger: " << tv::app::userMessage(e) << "\n";
     return tv::viewer::kFailureExit;

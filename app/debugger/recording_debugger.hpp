@@ -86,7 +86,6 @@ class RecordingDebugger {
   void drawTimeline(ImVec2 display, float height);
   void drawWhatIfSideBySide(ImVec2 origin, ImVec2 size);
   void drawWhatIfControls();
-  void drawWhatIfReport();
   void drawHelp();
 
   std::string path_;

@@ -16,6 +16,7 @@
 #include "timeline.hpp"
 #include "tv/app/user_message.hpp"
 #include "tv/ui/palette.hpp"
+#include "tv/ui/what_if_view.hpp"
 
 namespace tv::viewer {
 
@@ -26,25 +27,9 @@ namespace {
 constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
                                     ImGuiWindowFlags_NoFocusOnAppearing;
-constexpr ImU32 kImplausible = IM_COL32(200, 120, 255, 255);
-constexpr const char* kOpenLoop =
-    "Open-loop: the game's recorded goals are replayed as they were; how the game would have "
-    "reacted to a different outcome is not in the file.";
 
 ImVec4 colour(ImU32 c) {
   return ImGui::ColorConvertU32ToFloat4(c);
-}
-
-// "substep-discrete (8 px pieces)": the name, and the piece length where it has one.
-std::string moverLabel(const MoverSpec& m) {
-  if (m.kind != MoverKind::substep) return m.name();
-  char text[96];
-  if (m.maxStep == 0.0) {
-    std::snprintf(text, sizeof text, "%s (pieces of half the smallest item)", m.name().c_str());
-  } else {
-    std::snprintf(text, sizeof text, "%s (%g px pieces)", m.name().c_str(), m.maxStep);
-  }
-  return text;
 }
 
 }  // namespace
@@ -242,8 +227,8 @@ void RecordingDebugger::drawTimeline(ImVec2 display, float h) {
         static_cast<float>(static_cast<double>(*implausible) / static_cast<double>(last)) *
             (w - 8.0f);
     ImDrawList& dl = *ImGui::GetWindowDrawList();
-    dl.AddLine({x, p.y}, {x, q.y}, kImplausible, 2.0f);
-    dl.AddTriangleFilled({x - 5.0f, q.y}, {x + 5.0f, q.y}, {x, q.y - 6.0f}, kImplausible);
+    dl.AddLine({x, p.y}, {x, q.y}, pal::kImplausible, 2.0f);
+    dl.AddTriangleFilled({x - 5.0f, q.y}, {x + 5.0f, q.y}, {x, q.y - 6.0f}, pal::kImplausible);
   }
   if (to) {
     paused_ = true;
@@ -258,200 +243,17 @@ void RecordingDebugger::drawWhatIfSideBySide(ImVec2 origin, ImVec2 size) {
   WhatIf& w = *whatIf_;
   w.view.overlays = state_.view.overlays;
   w.view.paused = paused_;
-  const float side = std::clamp(size.x * 0.32f, 320.0f, 460.0f);
-  const float panels = size.x - side;
-  // One line across both panels: what this comparison is, and that it is open-loop.
-  ImGui::SetNextWindowPos(origin, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({panels, 0}, ImGuiCond_Always);
-  float titleH = 0.0f;
-  if (ImGui::Begin("WhatIfTitle", nullptr,
-                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing)) {
-    ImGui::Text("%s   frame %" PRIu64 "   recorded run  vs  %s%s", session_->name().c_str(),
-                session_->frame(), moverLabel(w.mover).c_str(),
-                w.updatesAsMoves ? " (updates treated as moves)" : "");
-    ImGui::PushStyleColor(ImGuiCol_Text, pal::kRender);
-    ImGui::TextWrapped("%s", kOpenLoop);
-    ImGui::PopStyleColor();
-    titleH = ImGui::GetWindowHeight();
+  const std::optional<WhatIfReport> report = w.job.report();
+  const ui::WhatIfStatus status{report ? &*report : nullptr, w.job.running(), w.job.error()};
+  ui::WhatIfPair pair{*session_, state_, *w.session, w.view, w.mover, w.updatesAsMoves};
+  const ui::WhatIfActions a = ui::whatIfLayout(pair, status, origin, size);
+  if (a.cameraMoved) follow_ = false;
+  if (a.goTo) {
+    paused_ = true;
+    goTo(a.goTo->first);
+    if (a.goTo->second) selectCall(*a.goTo->second);
   }
-  ImGui::End();
-
-  const float half = std::floor(panels * 0.5f);
-  const float h = std::max(size.y - titleH, 80.0f);
-  ui::RecordingSession* sessions[2] = {session_.get(), w.session.get()};
-  ui::DebuggerState* views[2] = {&state_.view, &w.view};
-  const std::string names[2] = {"recorded###RecordedPanel",
-                                "what-if: " + moverLabel(w.mover) + "###WhatIfPanel"};
-  std::optional<ItemId> picked;
-  for (int k = 0; k < 2; ++k) {
-    ImGui::SetNextWindowPos({origin.x + half * static_cast<float>(k), origin.y + titleH},
-                            ImGuiCond_Always);
-    ImGui::SetNextWindowSize({half, h}, ImGuiCond_Always);
-    if (ImGui::Begin(names[k].c_str(), nullptr, kFixed | ImGuiWindowFlags_NoScrollbar)) {
-      const float stats = ImGui::GetTextLineHeightWithSpacing() * 2.0f + 4.0f;
-      const ImVec2 avail = ImGui::GetContentRegionAvail();
-      if (auto pick = ui::recordingWorldView("##world", *sessions[k], *views[k],
-                                             {avail.x, std::max(avail.y - stats, 40.0f)})) {
-        picked = pick;
-      }
-      const MoveTrace* m = sessions[k]->callTrace();
-      if (!m && !sessions[k]->history().empty()) m = &sessions[k]->history().back().trace;
-      if (m) {
-        ImGui::Text("%s ended at (%.3f, %.3f), %zu hits", sessions[k]->describe(m->item).c_str(),
-                    m->final.x, m->final.y, m->hits.size());
-        if (k == 1) {
-          const MoveTrace* r = session_->callTrace();
-          if (!r && !session_->history().empty()) r = &session_->history().back().trace;
-          if (r) {
-            const double d = std::hypot(m->final.x - r->final.x, m->final.y - r->final.y);
-            ImGui::TextColored(colour(d > 0.0 ? pal::kRender : pal::kGood),
-                               d > 0.0 ? "%.3f from the recorded end" : "same end as recorded", d);
-          }
-        }
-      } else if (const auto id = sessions[k]->selected(); id && sessions[k]->world().has(*id)) {
-        // Moved by update (a game that moves bodies itself): nothing was swept to trace.
-        const Rect r = sessions[k]->world().rect(*id);
-        ImGui::Text("%s at (%.3f, %.3f), no move traced", sessions[k]->describe(*id).c_str(), r.x,
-                    r.y);
-      } else {
-        ImGui::TextColored(colour(pal::kDim), "select a call or an item to trace");
-      }
-    }
-    ImGui::End();
-  }
-  // One camera for both panels: a zoom or pan in either applies to the other.
-  for (int k = 0; k < 2; ++k) {
-    if (views[k]->frameView) continue;
-    const Rect view = views[k]->camera.view();
-    views[1 - k]->frameView = view;
-    if (follow_) follow_ = false;
-    views[k]->frameView = view;
-    break;
-  }
-
-  ui::RecordingActions a;
-  if (picked) a.item = *picked;
-  ImGui::SetNextWindowPos({origin.x + panels, origin.y}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({side, size.y}, ImGuiCond_Always);
-  if (ImGui::Begin("WhatIfSide", nullptr, kFixed | ImGuiWindowFlags_NoTitleBar)) {
-    if (ImGui::BeginTabBar("whatif")) {
-      if (ImGui::BeginTabItem("What-if report")) {
-        drawWhatIfReport();
-        ImGui::EndTabItem();
-      }
-      if (ImGui::BeginTabItem("Calls")) {
-        ImGui::BeginChild("calls");
-        ui::recordingCallsContents(*session_, state_, a);
-        ImGui::EndChild();
-        ImGui::EndTabItem();
-      }
-      if (ImGui::BeginTabItem("Inspector (what-if)")) {
-        ImGui::BeginChild("inspector");
-        ui::recordingInspectorContents(*w.session);
-        ImGui::EndChild();
-        ImGui::EndTabItem();
-      }
-      if (ImGui::BeginTabItem("Items")) {
-        ui::recordingOutlinerContents(*session_, state_, a);
-        ImGui::EndTabItem();
-      }
-      ImGui::EndTabBar();
-    }
-  }
-  ImGui::End();
-  apply(a);
-}
-
-void RecordingDebugger::drawWhatIfReport() {
-  WhatIf& w = *whatIf_;
-  ImGui::TextWrapped("%s", kOpenLoop);
-  if (w.job.running()) {
-    ImGui::TextColored(colour(pal::kDim), "re-running the whole recording with %s...",
-                       w.mover.name().c_str());
-    return;
-  }
-  if (!w.job.error().empty()) {
-    ImGui::TextColored(colour(pal::kBad), "%s", w.job.error().c_str());
-    return;
-  }
-  const auto r = w.job.report();
-  if (!r) return;
-  ImGui::TextWrapped("%" PRIu64 " moves re-run with %s; %zu ended elsewhere", r->moves,
-                     moverLabel(w.mover).c_str(), r->differences.size());
-  const auto goButton = [&](const char* id, std::uint64_t f, std::optional<std::uint32_t> call) {
-    ImGui::SameLine();
-    if (ImGui::SmallButton(id)) {
-      paused_ = true;
-      goTo(f);
-      if (call) selectCall(call);
-    }
-  };
-  if (r->firstDifferentFrame) {
-    ImGui::TextColored(colour(pal::kRender), "runs first differ at frame %" PRIu64,
-                       *r->firstDifferentFrame);
-    goButton("go##first", *r->firstDifferentFrame, std::nullopt);
-  } else {
-    ImGui::TextColored(colour(pal::kGood), "the runs never differ");
-  }
-  if (r->firstImplausibleFrame) {
-    ImGui::TextColored(colour(kImplausible),
-                       "from frame %" PRIu64 " the game's goals stop making sense",
-                       *r->firstImplausibleFrame);
-    goButton("go##implausible", *r->firstImplausibleFrame, std::nullopt);
-    ImGui::TextColored(colour(pal::kDim),
-                       "(a re-run body is far from where the recording goes on)");
-  }
-  ImGui::TextColored(colour(r->tunnelled ? pal::kBad : pal::kGood),
-                     "tunnelled: %" PRIu64 "   ended overlapping a solid: %" PRIu64, r->tunnelled,
-                     r->overlapping);
-  ImGui::PushStyleColor(ImGuiCol_Text, r->recordedTunnelled ? pal::kBad : pal::kDim);
-  ImGui::TextWrapped("the recorded run: tunnelled %" PRIu64 ", ended overlapping %" PRIu64,
-                     r->recordedTunnelled, r->recordedOverlapping);
-  ImGui::PopStyleColor();
-  if (r->failedCalls > 0) {
-    ImGui::TextColored(colour(pal::kRender), "%" PRIu64 " calls refused by the re-run world",
-                       r->failedCalls);
-  }
-  const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg |
-                                ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
-  if (!ImGui::BeginTable("differences", 4, flags)) return;
-  ImGui::TableSetupScrollFreeze(0, 1);
-  ImGui::TableSetupColumn("frame.call");
-  ImGui::TableSetupColumn("item");
-  ImGui::TableSetupColumn("by");
-  ImGui::TableSetupColumn("what");
-  ImGui::TableHeadersRow();
-  ImGuiListClipper clipper;
-  clipper.Begin(static_cast<int>(r->differences.size()));
-  while (clipper.Step()) {
-    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-      const MoveDifference& d = r->differences[static_cast<std::size_t>(i)];
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      char label[48];
-      std::snprintf(label, sizeof label, "%" PRIu64 ".%u##d%d", d.frame, d.call, i);
-      if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns)) {
-        paused_ = true;
-        goTo(d.frame);
-        selectCall(d.call);
-      }
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(session_->describe(d.item).c_str());
-      ImGui::TableNextColumn();
-      // Enough digits that a rounding-sized difference does not read as 0.000.
-      ImGui::Text("%.4g", d.distance);
-      ImGui::TableNextColumn();
-      if (d.tunnelled) {
-        ImGui::TextColored(colour(pal::kBad), "tunnelled");
-      } else if (d.overlapping) {
-        ImGui::TextColored(colour(pal::kBad), "overlapping");
-      } else {
-        ImGui::TextColored(colour(pal::kDim), "elsewhere");
-      }
-    }
-  }
-  ImGui::EndTable();
+  apply(a.recording);
 }
 
 void RecordingDebugger::drawWhatIfControls() {
@@ -495,7 +297,7 @@ void RecordingDebugger::drawWhatIfControls() {
   ImGui::SameLine();
   if (ImGui::Button("Recorded run only") && whatIf_) whatIf_.reset();
   ImGui::PushStyleColor(ImGuiCol_Text, pal::kDim);
-  ImGui::TextWrapped("%s", kOpenLoop);
+  ImGui::TextWrapped("%s", ui::kOpenLoop);
   ImGui::PopStyleColor();
   ImGui::End();
 }

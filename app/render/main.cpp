@@ -150,8 +150,9 @@ int renderRecording(const ui::RecordingFlags& r, const Options& o) {
     const std::string name = still.session().name();
     path = name.substr(0, name.rfind('.')) + "_{tick}.png";
   }
+  // The frame shown: --frame, or with --first-failure the frame it found.
   for (std::size_t at; (at = path.find("{tick}")) != std::string::npos;)
-    path.replace(at, 6, std::to_string(r.frame));
+    path.replace(at, 6, std::to_string(still.session().frame()));
   writePng(path, o.width, o.height, gl.readRgb());
   const double pngMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count();
@@ -201,6 +202,10 @@ int main(int argc, char** argv) {
   } catch (const tv::headless::UsageError& e) {
     std::cerr << "tv-render: " << e.message << "\n(see tv-render --help)\n";
     return tv::headless::kUsageExit;
+  } catch (const tv::ui::NoFailure& e) {
+    // Nothing failed, so there is no moment to draw: said, and not an error.
+    std::cerr << "tv-render: " << e.message << ": nothing to show, no image written\n";
+    return 0;
   } catch (const std::exception& e) {
     std::cerr << "tv-render: " << tv::app::userMessage(e) << "\n";
     return tv::headless::kFailureExit;

@@ -9,7 +9,8 @@ const char* const kUsage =
     "                 [--render-hz R] [--hide a,b] [--show a,b] [--frames K] [--timing]\n"
     "                 [--caption TEXT]\n"
     "                 [--PARAM VALUE ...]\n"
-    "       tv-render --open GAME.tvrec [--frame N] [--call K] [--item LABEL] [--size WxH]\n"
+    "       tv-render --open GAME.tvrec [--frame N] [--call K] [--item LABEL] [--window WxH]\n"
+    "                 [--what-if MOVER [--updates-as-moves] [--first-failure]]\n"
     "                 [--out FILE.png] [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b]\n"
     "       tv-render --list\n"
     "\n"
@@ -50,6 +51,12 @@ const char* const kUsage =
     "  --item LABEL     the recorded item traced (its moves over the last frames)\n"
     "                   --view scene frames the whole world; follow, the traced move.\n"
     "                   Default --out: <file>_<frame>.png\n"
+    "  --what-if MOVER  the recorded run beside a re-run of every recorded move with MOVER, and\n"
+    "                   the re-run's report (tv-debugger's what-if view)\n"
+    "  --updates-as-moves  with --what-if: re-run each position-only update as a move too\n"
+    "  --first-failure  with --what-if, instead of --frame and --call: the first re-run move\n"
+    "                   that tunnelled or ended inside a solid, its item traced. When none did,\n"
+    "                   it says so and writes no image (exit 0)\n"
     "Exit status: 0 done, 1 rendering failed, 2 bad command line.\n";
 
 }  // namespace tv::headless

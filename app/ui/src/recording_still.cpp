@@ -25,6 +25,7 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
   RecordingFlags r;
   bool named = false;
   const char* picked = nullptr;  // a recording-only flag, for the error without a file
+  const char* placed = nullptr;  // --frame or --call, which --first-failure replaces
   rest.assign(argv, argv + std::min(argc, 1));
   const auto value = [&](int& i, std::string_view flag) -> std::string_view {
     if (i + 1 >= argc || std::string_view(argv[i + 1]).substr(0, 2) == "--")
@@ -39,7 +40,7 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
       named = true;
     } else if (arg == "--frame") {
       r.frame = app::parseWhole<UsageError>("frame", value(i, arg));
-      picked = "--frame";
+      picked = placed = "--frame";
     } else if (arg == "--item") {
       r.item = std::string(value(i, arg));
       picked = "--item";
@@ -47,13 +48,16 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
       const std::uint64_t k = app::parseWhole<UsageError>("call", value(i, arg));
       if (k > 0xFFFFFFFEu) throw UsageError{"--call: " + std::to_string(k) + " is too large"};
       r.call = static_cast<std::uint32_t>(k);
-      picked = "--call";
+      picked = placed = "--call";
     } else if (arg == "--what-if") {
       r.whatIf = app::parseMoverFlag<UsageError>("what-if", value(i, arg));
       picked = "--what-if";
     } else if (arg == "--updates-as-moves") {
       r.updatesAsMoves = true;
       picked = "--updates-as-moves";
+    } else if (arg == "--first-failure") {
+      r.firstFailure = true;
+      picked = "--first-failure";
     } else if (positional && arg.substr(0, 1) != "-" && endsWith(arg, ".tvrec")) {
       if (named) throw UsageError{"'" + std::string(arg) + "': one recording at a time"};
       r.path = arg;
@@ -65,6 +69,15 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
   if (!named) {
     if (picked) throw UsageError{std::string(picked) + ": only with a recording (--open FILE)"};
     return std::nullopt;
+  }
+  if (!r.whatIf && (r.updatesAsMoves || r.firstFailure)) {
+    throw UsageError{std::string(r.firstFailure ? "--first-failure" : "--updates-as-moves") +
+                     ": goes with --what-if MOVER (the re-run it is about)"};
+  }
+  if (r.firstFailure && placed) {
+    throw UsageError{std::string(placed) +
+                     ": --first-failure picks the frame and call (of the first re-run move that "
+                     "tunnelled or ended inside a solid)"};
   }
   return r;
 }
@@ -113,30 +126,59 @@ Rect recordingView(const RecordingSession& s, const PictureOptions& o) {
 RecordingStill::RecordingStill(const RecordingFlags& r, const PictureOptions& o)
     : r_(r), o_(o), session_(openRecording(r.path)) {
   rejectSceneFlags(o);
-  if (r.whatIf || r.updatesAsMoves) {
-    throw UsageError{
-        std::string(r.whatIf ? "--what-if" : "--updates-as-moves") +
-        ": a what-if run is shown by tv-debugger (tv-replay --mover prints its report)"};
-  }
   (void)overlaysFor(o);  // a bad --hide/--show fails before anything is drawn
   if (session_.frames() == 0)
     throw UsageError{"--open " + r.path + ": the recording has no frames"};
-  if (r.frame > session_.lastFrame()) {
-    throw UsageError{"--frame " + std::to_string(r.frame) + ": the recording has frames 0.." +
-                     std::to_string(session_.lastFrame())};
-  }
-  session_.goTo(r.frame);
-  if (r.item) {
-    const auto id = session_.findLabel(*r.item);
-    if (!id) throw UsageError{"--item: no recorded item is labelled '" + *r.item + "'"};
-    session_.select(id);
-  }
-  if (r.call) {
-    if (*r.call >= session_.calls().size()) {
-      throw UsageError{"--call " + std::to_string(*r.call) + ": frame " + std::to_string(r.frame) +
-                       " has " + std::to_string(session_.calls().size()) + " calls"};
+  if (r.whatIf) {
+    // The whole re-run first: its report is part of the picture, and --first-failure needs it.
+    whatIf_ = std::make_unique<WhatIf>();
+    whatIf_->mover = *r.whatIf;
+    whatIf_->report = runWhatIf(r.path, whatIf_->mover, r.updatesAsMoves);
+    ReplayOptions ro;
+    ro.mover = whatIf_->mover;
+    ro.updatesAsMoves = r.updatesAsMoves;
+    ro.tolerant = true;
+    whatIf_->session = std::make_unique<RecordingSession>(
+        Replay::open(r.path, ro), session_.name() + " with " + whatIf_->mover.name());
+    if (r.firstFailure) {
+      const auto f = firstFailure(whatIf_->report);
+      if (!f) {
+        throw NoFailure{"under " + moverLabel(whatIf_->mover) + " no move of " + session_.name() +
+                        " tunnelled or ended inside a solid (" +
+                        std::to_string(whatIf_->report.moves) + " moves re-run)"};
+      }
+      r_.frame = f->frame;
+      r_.call = f->call;
+      failedItem_ = f->item;
     }
-    session_.selectCall(r.call);
+  }
+  showBoth();
+}
+
+void RecordingStill::showBoth() {
+  RecordingSession* sessions[2] = {&session_, whatIf_ ? whatIf_->session.get() : nullptr};
+  for (RecordingSession* s : sessions) {
+    if (!s) continue;
+    if (r_.frame > s->lastFrame()) {
+      throw UsageError{"--frame " + std::to_string(r_.frame) + ": the recording has frames 0.." +
+                       std::to_string(s->lastFrame())};
+    }
+    s->goTo(r_.frame);
+    if (r_.item) {
+      const auto id = s->findLabel(*r_.item);
+      if (!id) throw UsageError{"--item: no recorded item is labelled '" + *r_.item + "'"};
+      s->select(id);
+    } else if (failedItem_) {
+      s->select(failedItem_);
+    }
+    if (r_.call) {
+      if (*r_.call >= s->calls().size()) {
+        throw UsageError{"--call " + std::to_string(*r_.call) + ": frame " +
+                         std::to_string(r_.frame) + " has " + std::to_string(s->calls().size()) +
+                         " calls"};
+      }
+      s->selectCall(r_.call);
+    }
   }
 }
 
@@ -146,11 +188,29 @@ void RecordingStill::beginImage() {
   state_.view.frameView = recordingView(session_, o_);
   state_.view.paused = true;
   state_.revealCall = true;
+  if (whatIf_) {
+    // One camera for both runs; following frames the recorded move and the re-run's together.
+    if (o_.view == ViewKind::follow) {
+      const double minSide = std::max(8.0 * session_.typicalSize(), 64.0);
+      state_.view.frameView =
+          unite(session_.followView(minSide), whatIf_->session->followView(minSide));
+    }
+    whatIf_->view = DebuggerState{};
+    whatIf_->view.overlays = state_.view.overlays;
+    whatIf_->view.frameView = state_.view.frameView;
+    whatIf_->view.paused = true;
+  }
 }
 
 void RecordingStill::drawFrame(ImVec2 display) {
   ImGui::SetWindowFocus(nullptr);  // a still has no focused window: no highlighted title
-  (void)recordingLayout(session_, state_, {0, 0}, display);
+  if (!whatIf_) {
+    (void)recordingLayout(session_, state_, {0, 0}, display);
+    return;
+  }
+  WhatIfPair pair{session_, state_, *whatIf_->session, whatIf_->view, whatIf_->mover,
+                  r_.updatesAsMoves};
+  (void)whatIfLayout(pair, WhatIfStatus{&whatIf_->report, false, {}}, {0, 0}, display);
 }
 
 }  // namespace tv::ui

@@ -1,9 +1,12 @@
 #pragma once
 /// A still of a recording: the debugger's picture of a recorded game at a frame (and call), as
 /// `tv-render --open FILE` draws it and as `tv-debugger FILE --screenshot` draws it, from the
-/// same flags.
+/// same flags. With `--what-if MOVER` the still is the debugger's what-if view: the recorded run
+/// beside its re-run under another mover, with the report; `--first-failure` picks the first
+/// re-run move that tunnelled or ended inside a solid (a game's CI draws what failed).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +15,7 @@
 #include "tv/ui/picture_options.hpp"
 #include "tv/ui/recording_session.hpp"
 #include "tv/ui/recording_view.hpp"
+#include "tv/ui/what_if_view.hpp"
 
 namespace tv::ui {
 
@@ -21,14 +25,23 @@ struct RecordingFlags {
   std::uint64_t frame = 0;            ///< --frame N
   std::optional<std::string> item;    ///< --item LABEL: the item traced
   std::optional<std::uint32_t> call;  ///< --call K: the call of the frame selected
-  std::optional<MoverSpec> whatIf;    ///< --what-if MOVER: re-run beside it (tv-debugger)
+  std::optional<MoverSpec> whatIf;    ///< --what-if MOVER: re-run beside the recorded run
   bool updatesAsMoves = false;        ///< --updates-as-moves: for the what-if run
+  /// --first-failure: with --what-if, the frame and call of the first re-run move that
+  /// tunnelled or ended inside a solid (instead of --frame and --call).
+  bool firstFailure = false;
 };
 
-/// Takes --open, --frame, --item, --call, --what-if and --updates-as-moves (and, with `positional`,
-/// a lone argument ending in .tvrec) out of argv; the other arguments go to `rest`, argv[0] first.
-/// Returns the flags when a recording was named; UsageError for a flag without its value, or
-/// --frame/--item/--call without a recording.
+/// `--first-failure` found nothing to show: no re-run move tunnelled or ended inside a solid.
+struct NoFailure {
+  std::string message;
+};
+
+/// Takes --open, --frame, --item, --call, --what-if, --updates-as-moves and --first-failure (and,
+/// with `positional`, a lone argument ending in .tvrec) out of argv; the other arguments go to
+/// `rest`, argv[0] first. Returns the flags when a recording was named; UsageError for a flag
+/// without its value, --frame/--item/--call without a recording, --updates-as-moves or
+/// --first-failure without --what-if, and --first-failure with --frame or --call.
 [[nodiscard]] std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv,
                                                                   bool positional,
                                                                   std::vector<char*>& rest);
@@ -42,8 +55,9 @@ void rejectSceneFlags(const PictureOptions& o);
 
 class RecordingStill {
  public:
-  /// Opens the recording and shows the frame, item and call the flags name; tv::Error for a bad
-  /// file, UsageError for a frame, item or call it does not have.
+  /// Opens the recording and shows the frame, item and call the flags name (with --what-if, runs
+  /// the re-run to the end first); tv::Error for a bad file, UsageError for a frame, item or call
+  /// it does not have, NoFailure for --first-failure when nothing failed.
   RecordingStill(const RecordingFlags& r, const PictureOptions& o);
 
   /// Fresh per-image state (camera, overlays): call once per image, before its frames.
@@ -53,10 +67,21 @@ class RecordingStill {
   [[nodiscard]] RecordingSession& session() { return session_; }
 
  private:
+  void showBoth();
+
   RecordingFlags r_;
   PictureOptions o_;
   RecordingSession session_;
   RecordingViewState state_;
+  // --what-if: the re-run, its whole-run report and its view.
+  struct WhatIf {
+    MoverSpec mover;
+    WhatIfReport report;
+    std::unique_ptr<RecordingSession> session;
+    DebuggerState view;
+  };
+  std::unique_ptr<WhatIf> whatIf_;
+  std::optional<ItemId> failedItem_;  // --first-failure: the item whose move failed
 };
 
 /// The overlays for a recording: as `overlaysFor`, but without the physics/render/pixel marker

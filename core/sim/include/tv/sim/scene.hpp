@@ -29,8 +29,8 @@ namespace tv::sim {
 
 /// A solid of the scene (a tile, a wall piece). `tag` is scene-defined (e.g. floor vs wall).
 struct Solid {
-  Rect rect;
-  std::uint8_t tag = 0;
+  Rect rect;             ///< where it is, px
+  std::uint8_t tag = 0;  ///< scene-defined kind (0 by default)
 };
 
 class SceneRules;
@@ -46,9 +46,9 @@ struct SceneSetup {
 
 /// What the rules may see and change during a tick.
 struct TickContext {
-  std::span<Body> bodies;
-  Counters& counters;
-  const World& world;
+  std::span<Body> bodies;  ///< every body, in the scene's order (the rules may change them)
+  Counters& counters;      ///< what the scene counts (the rules add to them)
+  const World& world;      ///< the world after this tick's moves
   std::uint64_t tick = 0;                    ///< the tick being run: 0 for the first
   double dt = 0.0;                           ///< its length, s
   std::span<const Vec2> previous;            ///< every body's position before this tick
@@ -104,6 +104,7 @@ struct SceneDef {
   [[nodiscard]] Rect defaultCamera() const { return camera(defaults()); }
 };
 
+/// A set of scenes by name (the built-in ones: builtinScenes()).
 class SceneRegistry {
  public:
   /// Registers a scene. Throws tv::Error on an empty or duplicate name, missing functions, or
@@ -115,6 +116,7 @@ class SceneRegistry {
   [[nodiscard]] const SceneDef* tryFind(std::string_view name) const;
   /// In registration order.
   [[nodiscard]] std::span<const SceneDef> all() const { return scenes_; }
+  /// Their names, in registration order.
   [[nodiscard]] std::vector<std::string_view> names() const;
 
  private:
