@@ -60,8 +60,12 @@ inline constexpr double kDelta = 1e-10;
 /// parameter range [ti1, ti2], with the normals of the sides where it enters and leaves.
 struct Indices {
   bool hit = false;  ///< false: bump returns nil
-  double ti1 = 0.0, ti2 = 0.0;
-  Vec2 normal1, normal2;
+  double ti1 = 0.0;  ///< where the segment enters `r` (a fraction of a→b), at least ti1 given
+  double ti2 = 0.0;  ///< where it leaves `r`, at most ti2 given
+  /// The normal of the side it enters by; (0, 0) when it is inside `r` at the ti1 given.
+  Vec2 normal1;
+  /// The normal of the side it leaves by; (0, 0) when it is inside `r` at the ti2 given.
+  Vec2 normal2;
 };
 [[nodiscard]] Indices segmentIndices(const Rect& r, Vec2 a, Vec2 b, double ti1, double ti2);
 
@@ -82,7 +86,11 @@ struct Indices {
 /// bump's cells of a rect (`grid_toCellRect`), 1-based as bump counts them: columns
 /// [left, right], rows [top, bottom].
 struct Cells {
-  double left = 1.0, top = 1.0, right = 0.0, bottom = 0.0;
+  double left = 1.0;    ///< first column
+  double top = 1.0;     ///< first row
+  double right = 0.0;   ///< last column (below `left`: no cells)
+  double bottom = 0.0;  ///< last row
+  /// Whether the two ranges share a cell.
   [[nodiscard]] bool meets(const Cells& o) const {
     return left <= o.right && o.left <= right && top <= o.bottom && o.top <= bottom;
   }

@@ -63,8 +63,7 @@ struct MoveOptions {
   /// Responses per move before the item stops where it is (acute pockets, bounce between
   /// walls closer than the move). Range [1, 4096].
   int maxResponses = 64;
-  /// Whose rules apply (default: the core's); MoveSemantics::bump for bump.lua's.
-  MoveSemantics semantics = MoveSemantics::tunnelvision;
+  MoveSemantics semantics = MoveSemantics::tunnelvision;  ///< whose rules (default: the core's)
 };
 
 /// What a move did: where the item ended and what it met on the way.
