@@ -365,9 +365,9 @@ void hudContents(const Session& session, const DebuggerState& st) {
                      st.camera.scale());
 }
 
-void legendContents(int columns) {
+void legendContents(int columns, bool withCategories) {
   if (!ImGui::BeginTable("legend", columns)) return;
-  for (const pal::LegendEntry& e : pal::legend()) {
+  for (const pal::LegendEntry& e : pal::legend(withCategories)) {
     ImGui::TableNextColumn();
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const float s = ImGui::GetTextLineHeight();

@@ -149,6 +149,10 @@ std::optional<ItemId> RecordingSession::itemAt(Vec2 p) const {
   return best;
 }
 
+bool RecordingSession::pictureHasCategories() const {
+  return std::any_of(bodyFills_.begin(), bodyFills_.end(), [](ImU32 f) { return f != 0; });
+}
+
 WorldPicture RecordingSession::picture() {
   solids_.clear();
   bodies_.clear();

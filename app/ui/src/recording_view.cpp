@@ -403,7 +403,8 @@ RecordingActions recordingLayout(RecordingSession& s, RecordingViewState& st, Im
   ImGui::End();
 
   view.coveredBottom =
-      detail::legendOverlay({x0, y0}, {worldW, display.y}, worldW > 700.0f ? 4 : 3);
+      detail::legendOverlay({x0, y0}, {worldW, display.y}, worldW > 700.0f ? 4 : 3,
+                            s.pictureHasCategories());
 
   // The calls take the top third of the column; the inspector or the outliner the rest.
   const float callsH = std::floor(std::clamp(display.y * 0.34f, 120.0f, 260.0f));

@@ -19,7 +19,8 @@ void place(ImVec2 pos, ImVec2 size, ImVec2 pivot = {0, 0});
 /// A borderless window that only hosts a world view; pair with ImGui::End().
 bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size);
 /// The colour legend across the bottom of a world view at `origin` of `size`, in `columns`;
-/// returns how much of the view's bottom it covers.
-float legendOverlay(ImVec2 origin, ImVec2 size, int columns);
+/// returns how much of the view's bottom it covers. `withCategories`: the picture has items drawn
+/// in their category's colour.
+float legendOverlay(ImVec2 origin, ImVec2 size, int columns, bool withCategories = false);
 
 }  // namespace tv::ui::detail

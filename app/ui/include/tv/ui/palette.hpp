@@ -89,8 +89,10 @@ struct LegendEntry {
   const char* label;
 };
 
-/// Every colour above that means something in the world view, in reading order.
-[[nodiscard]] std::span<const LegendEntry> legend();
+/// Every colour above that means something in the world view, in reading order. The entry for
+/// items drawn in their category's colour is there only `withCategories`: only a recording's
+/// picture has such items, and a legend line more would cut the panels of every other view.
+[[nodiscard]] std::span<const LegendEntry> legend(bool withCategories = false);
 
 }  // namespace tv::ui::palette
 

@@ -66,7 +66,7 @@ void inspectorContents(const Session& session);
 void countersContents(const Session& session);
 /// One line of scene, mover, tick and paused; a second with the timing.
 void hudContents(const Session& session, const DebuggerState& state);
-/// Every palette entry with its swatch, in `columns` columns.
-void legendContents(int columns);
+/// Every palette entry with its swatch, in `columns` columns (palette::legend(withCategories)).
+void legendContents(int columns, bool withCategories = false);
 
 }  // namespace tv::ui

@@ -76,6 +76,9 @@ class RecordingSession {
   [[nodiscard]] const std::optional<Divergence>& divergence() const { return divergence_; }
   /// What the world view draws now (valid until the next call that changes the session).
   [[nodiscard]] WorldPicture picture();
+  /// True when the last picture() drew an item in its category's colour (the legend then
+  /// says what that colour means).
+  [[nodiscard]] bool pictureHasCategories() const;
   /// The world rect that frames the selected call's move (or the traced item's last move),
   /// padded and at least `minSide` a side; the whole world if none.
   [[nodiscard]] Rect followView(double minSide) const;
