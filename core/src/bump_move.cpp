@@ -5,6 +5,7 @@
 // passing into something already met.
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "tv/bump.hpp"
@@ -42,37 +43,59 @@ bool World::bumpFirstHit(ItemId self, const Rect& at, Vec2 goal, Filter filter, 
                         static_cast<std::int64_t>(cells.right) - 1,
                         static_cast<std::int64_t>(cells.bottom) - 1};
   if (trace) Grid::forEachCell(range, [&](Cell c) { trace->cells.push_back(c); });
-  bumpFound_.clear();
   const std::uint32_t epoch = nextEpoch();
   if (self.valid()) stamp_[self.index] = epoch;
   for (const ItemId m : bumpMet_) stamp_[m.index] = epoch;  // met: left out, as bump's visited
+  // An entry in one cell only is met once: it needs no stamp, only to be neither the mover nor
+  // met before (a short list). Reading its stamp would be a cache miss per candidate.
+  const auto leftOut = [&](std::uint32_t slot) {
+    if (self.valid() && slot == self.index) return true;
+    return std::any_of(bumpMet_.begin(), bumpMet_.end(),
+                       [&](ItemId m) { return m.index == slot; });
+  };
+  // The leg's swept box, widened by a margin far beyond what bump's DELTA and the rounding of
+  // its arithmetic can reach: an item wholly outside it can be neither met nor overlapped
+  // (bump's detect would return nil), so it is left out before bump's cell test and detect,
+  // whose divisions are most of a candidate's cost. Traced moves list every candidate.
+  const double reach = 1e-6 * (1.0 + std::fabs(at.x) + std::fabs(at.y) + std::fabs(goal.x) +
+                               std::fabs(goal.y) + at.w + at.h);
+  const double boxL = std::min(at.x, goal.x) - reach, boxR = std::max(at.x, goal.x) + at.w + reach;
+  const double boxT = std::min(at.y, goal.y) - reach, boxB = std::max(at.y, goal.y) + at.h + reach;
+  const auto beyond = [&](const Rect& o) {
+    const double slack = 1e-6 * (std::fabs(o.x) + std::fabs(o.y) + o.w + o.h);
+    return o.x - slack > boxR || o.x + o.w + slack < boxL || o.y - slack > boxB ||
+           o.y + o.h + slack < boxT;
+  };
+  bumpHits_.clear();
   const detail::SpatialHash& hash = *hash_;
   Grid::forEachCell(hash.live(range), [&](Cell c) {
     for (const detail::HashEntry& e : hash.items(c)) {
-      if (stamp_[e.slot()] == epoch) continue;
-      if (e.shared()) stamp_[e.slot()] = epoch;  // in several cells: once
+      if (e.shared()) {
+        if (stamp_[e.slot()] == epoch) continue;
+        stamp_[e.slot()] = epoch;  // in several cells: once
+      } else if (leftOut(e.slot())) {
+        continue;
+      }
+      if (trace == nullptr && beyond(e.rect)) continue;
       if (!bump::cellsOf(size, e.rect).meets(cells)) continue;  // not in bump's cells of the leg
-      bumpFound_.push_back({e.slot(), e.generation});
+      // The entry holds the item's rect: the slots need not be read.
+      const ItemId other{e.slot(), e.generation};
+      if (trace) trace->candidates.push_back(other);
+      const Sweep s = bump::detect(at, goal, e.rect);
+      if (s.kind == SweepKind::miss) continue;
+      Collision col;
+      col.item = self;
+      col.other = other;
+      col.overlaps = s.kind == SweepKind::overlap;
+      col.ti = s.ti;
+      col.move = goal - at.position();
+      col.normal = s.normal;
+      col.touch = s.touch;
+      col.itemRect = at;
+      col.otherRect = e.rect;
+      bumpHits_.push_back(col);
     }
   });
-  bumpHits_.clear();
-  for (const ItemId other : bumpFound_) {
-    const Rect o = slots_[other.index].rect;
-    if (trace) trace->candidates.push_back(other);
-    const Sweep s = bump::detect(at, goal, o);
-    if (s.kind == SweepKind::miss) continue;
-    Collision c;
-    c.item = self;
-    c.other = other;
-    c.overlaps = s.kind == SweepKind::overlap;
-    c.ti = s.ti;
-    c.move = goal - at.position();
-    c.normal = s.normal;
-    c.touch = s.touch;
-    c.itemRect = at;
-    c.otherRect = o;
-    bumpHits_.push_back(c);
-  }
   const auto key = [&](const Collision& c) {
     return Key{c.ti, bump::squareDistance(c.itemRect, c.otherRect), orders_[c.other.index]};
   };

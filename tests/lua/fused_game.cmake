@@ -1,5 +1,5 @@
-# A LÖVE game shipped as core/lua/README.md says: tests/lua/fused (with the shim
-# tunnelvision/bump.lua) zipped into game.love; the module beside it; `love game.love` run, then
+# A LÖVE game shipped as core/lua/README.md says: tests/lua/fused, with the tunnelvision/bump.lua
+# the build puts beside the module, zipped into game.love; the module beside it; `love game.love` run, then
 # the love executable fused with game.love (cat love game.love > game) run — both must load the
 # module from beside the game and stop a bullet at a wall.
 #   cmake -DLOVE=love -DMODULE=tunnelvision.so -DSOURCE=repo -DWORK=dir -P fused_game.cmake
@@ -12,7 +12,9 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/game/tunnelvision ${WORK}/ship)
 file(COPY ${SOURCE}/tests/lua/fused/main.lua ${SOURCE}/tests/lua/fused/conf.lua
      DESTINATION ${WORK}/game)
-file(COPY ${SOURCE}/core/lua/tunnelvision/bump.lua DESTINATION ${WORK}/game/tunnelvision)
+# What the build makes is what a game ships: the module and tunnelvision/bump.lua beside it.
+get_filename_component(module_dir ${MODULE} DIRECTORY)
+file(COPY ${module_dir}/tunnelvision/bump.lua DESTINATION ${WORK}/game/tunnelvision)
 execute_process(COMMAND ${CMAKE_COMMAND} -E tar cf ${WORK}/ship/game.love --format=zip
                         main.lua conf.lua tunnelvision/bump.lua
                 WORKING_DIRECTORY ${WORK}/game RESULT_VARIABLE rc)

@@ -1,7 +1,9 @@
 -- The crowd from Lua: N movers of 8x8 among 16x16 tiles (30% solid, walled) in a 2000x2000
 -- world, one move each per tick with slide, driven through tunnelvision.bump (world:move, which
 -- must return bump's tables) and through tunnelvision's world:go (no garbage). Prints ms per
--- tick, garbage per tick and the cost of a call from Lua into the module.
+-- tick, garbage per tick and the cost of a call from Lua into the module. Under LuaJIT each of
+-- our APIs runs twice: through the fast path (the FFI) and through the C API it falls back to.
+-- The APIs take turns, tick batch by tick batch, in one run; the best batch of each counts.
 --
 --   luajit core/lua/bench/crowd.lua [--quick] [--module-dir build/release/lua] [--bump PATH]
 --   (--bump: also bump.lua itself, from a file of yours, in the same run)
@@ -87,25 +89,39 @@ local function tickGo(world, movers)
   end
 end
 
-local function measure(count, tick, ticks, newWorld)
-  local world, movers = build(count, newWorld)
-  for _ = 1, 20 do tick(world, movers) end  -- warm up (traces, core buffers)
-  collectgarbage('collect')
-  -- garbage: a few ticks with the collector stopped
-  collectgarbage('stop')
-  local before = collectgarbage('count')
-  for _ = 1, 5 do tick(world, movers) end
-  local garbage = (collectgarbage('count') - before) / 5
-  collectgarbage('restart')
-  collectgarbage('collect')
-  -- time: the collector running, as in a game
-  local best = math.huge
-  for _ = 1, 3 do
-    local t0 = os.clock()
-    for _ = 1, ticks do tick(world, movers) end
-    best = math.min(best, (os.clock() - t0) / ticks)
+-- The C API methods in place of the fast path's, for this world only (its own fields).
+local function viaCApi(world)
+  for name, f in pairs(tv._capi) do world[name] = f end
+  return world
+end
+
+-- Every API's world for `count` movers, warmed up, with its garbage per tick measured (the
+-- collector stopped for a few ticks); then the ticks timed in rounds, each round running every
+-- API in turn, so that a slow spell of the machine hits them all alike. Best round per API.
+local function measureAll(count, apis, ticks, rounds)
+  local runs = {}
+  for i, api in ipairs(apis) do
+    local world, movers = build(count, api.newWorld)
+    if api.capi then viaCApi(world) end
+    for _ = 1, 20 do api.tick(world, movers) end  -- warm up (traces, core buffers)
+    collectgarbage('collect')
+    collectgarbage('stop')
+    local before = collectgarbage('count')
+    for _ = 1, 5 do api.tick(world, movers) end
+    local garbage = (collectgarbage('count') - before) / 5
+    collectgarbage('restart')
+    collectgarbage('collect')
+    runs[i] = { world = world, movers = movers, garbage = garbage, best = math.huge }
   end
-  return best * 1000, garbage
+  for _ = 1, rounds do
+    for i, api in ipairs(apis) do
+      local r = runs[i]
+      local t0 = os.clock()
+      for _ = 1, ticks do api.tick(r.world, r.movers) end
+      r.best = math.min(r.best, (os.clock() - t0) / ticks)
+    end
+  end
+  return runs
 end
 
 local function callCost()
@@ -129,19 +145,32 @@ local function callCost()
 end
 
 local vm = jit and jit.version or _VERSION
-print(('crowd from Lua (%s)%s'):format(vm, quick and ', --quick' or ''))
+print(('crowd from Lua (%s), fast path %s%s'):format(vm, tv.fastPath and 'on (FFI)' or 'off (C API)',
+                                                    quick and ', --quick' or ''))
 print('')
-print('| movers | API | ms/tick | garbage KB/tick | bytes/move |')
-print('|---:|---|---:|---:|---:|')
+print('| movers | API | ms/tick | vs bump.lua | garbage KB/tick | bytes/move |')
+print('|---:|---|---:|---:|---:|---:|')
+local apis = {}
+if bumpPath then
+  apis[#apis + 1] = { name = 'bump.lua  world:move', tick = tickBump, newWorld = dofile(bumpPath).newWorld }
+end
+local function add(name, tick, newWorld)
+  apis[#apis + 1] = { name = name .. (tv.fastPath and ' (FFI)' or ''), tick = tick, newWorld = newWorld }
+  if tv.fastPath then
+    apis[#apis + 1] = { name = name .. ' (C API)', tick = tick, newWorld = newWorld, capi = true }
+  end
+end
+add('tunnelvision.bump  world:move', tickBump, tv.bump.newWorld)
+add('tunnelvision  world:move', tickBump, tv.newWorld)
+add('tunnelvision  world:go', tickGo, tv.newWorld)
 for _, count in ipairs(quick and { 1000 } or { 1000, 10000 }) do
-  local ticks = quick and 5 or (count >= 10000 and 30 or 100)
-  local apis = { { 'tunnelvision.bump  world:move', tickBump, tv.bump.newWorld },
-                 { 'tunnelvision  world:move', tickBump, tv.newWorld },
-                 { 'tunnelvision  world:go', tickGo, tv.newWorld } }
-  if bumpPath then table.insert(apis, 1, { 'bump.lua  world:move', tickBump, dofile(bumpPath).newWorld }) end
-  for _, api in ipairs(apis) do
-    local ms, kb = measure(count, api[2], ticks, api[3])
-    print(('| %d | %s | %.2f | %.1f | %.1f |'):format(count, api[1], ms, kb, kb * 1024 / count))
+  local ticks = quick and 5 or (count >= 10000 and 10 or 100)
+  local runs = measureAll(count, apis, ticks, quick and 1 or 5)
+  for i, api in ipairs(apis) do
+    local r = runs[i]
+    local ratio = bumpPath and ('%.1fx'):format(runs[1].best / r.best) or '-'
+    print(('| %d | %s | %.2f | %s | %.1f | %.1f |'):format(count, api.name, r.best * 1000, ratio,
+                                                         r.garbage, r.garbage * 1024 / count))
   end
 end
 local c1, c2 = callCost()

@@ -115,25 +115,15 @@ bool sentinelAlive(lua_State* L, int worldIdx) {
 }  // namespace
 
 void moveCells(lua_State* L, int worldIdx, LuaWorld& w, std::uint32_t slot, const tv::Rect* to) {
-  if (slot >= w.ranges.size()) w.ranges.resize(slot + 1);
-  BumpCells::Range& from = w.ranges[slot];
-  const BumpCells::Range b = to ? w.cells.of(*to) : BumpCells::Range{};
-  if (to && from == b) return;  // the usual small move: nothing to do
-  if (to) w.cells.add(b);       // first, so that shared cells never empty
-  if (from.x0 <= from.x1 && from.y0 <= from.y1) {
-    // Cells emptied before a collection that has run since are gone, as in bump.
-    if (!sentinelAlive(L, worldIdx)) w.cells.collect();
-    if (w.cells.remove(from)) {
-      pushEnv(L, worldIdx, kSentinel);
-      lua_rawgeti(L, -1, 1);
-      if (lua_isnil(L, -1)) {
-        lua_newtable(L);  // referenced only by the weak table: dies at the next collection
-        lua_rawseti(L, -3, 1);
-      }
-      lua_pop(L, 2);
+  if (relocateCells(w, slot, to, [&] { return sentinelAlive(L, worldIdx); })) {
+    pushEnv(L, worldIdx, kSentinel);
+    lua_rawgeti(L, -1, 1);
+    if (lua_isnil(L, -1)) {
+      lua_newtable(L);  // referenced only by the weak table: dies at the next collection
+      lua_rawseti(L, -3, 1);
     }
+    lua_pop(L, 2);
   }
-  from = b;
 }
 
 std::size_t countBumpCells(lua_State* L, int worldIdx, LuaWorld& w) {

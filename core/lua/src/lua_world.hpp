@@ -78,6 +78,18 @@ class BumpCells {
 
 struct CallContext;
 
+/// A collision as the fast path hands it to Lua through the FFI (fast_path.lua declares the
+/// same struct): plain numbers, read by field.
+struct FastCollision {
+  double ti, moveX, moveY, normalX, normalY, touchX, touchY;
+  double itemX, itemY, itemW, itemH, otherX, otherY, otherW, otherH;
+  double targetX, targetY;
+  std::int32_t other;     // the other item's slot
+  std::int32_t response;  // its response id (the name is env[kIdToName][response])
+  std::int32_t overlaps;  // 0 or 1
+  std::int32_t unused;
+};
+
 struct LuaWorld {
   static constexpr std::uint64_t kMagic = 0x74766C7561776F72ull;
   explicit LuaWorld(double cellSize) : world(cellSize), cells(cellSize) {}
@@ -101,6 +113,7 @@ struct LuaWorld {
   BumpCells cells;
   std::vector<BumpCells::Range> ranges;  // per slot: the bump cells its item is registered in
   std::vector<tv::Collision> last;   // the last `go`'s collisions (getCollision)
+  std::vector<FastCollision> fastCols;  // the last fast-path move's (fast_path.cpp)
   std::vector<tv::BatchMove> moves;  // the batch step's input
   // Query and project scratch, one per nesting level (a filter may query the same world).
   struct Scratch {
@@ -156,6 +169,25 @@ class Busy {
 };
 /// Raises "world:<what> cannot be called while one of the world's filters or responses runs".
 void checkNotBusy(lua_State* L, LuaWorld& w, const char* what);
+/// The part of moveCells that needs no Lua: returns true when a cell emptied (the caller then
+/// keeps the sentinel alive). `sentinelAlive` says whether no collection ran since the last one
+/// emptied (asked only when a range changes).
+template <class Alive>
+bool relocateCells(LuaWorld& w, std::uint32_t slot, const tv::Rect* to, Alive sentinelAlive) {
+  if (slot >= w.ranges.size()) w.ranges.resize(slot + 1);
+  BumpCells::Range& from = w.ranges[slot];
+  const BumpCells::Range b = to ? w.cells.of(*to) : BumpCells::Range{};
+  if (to && from == b) return false;  // the usual small move: nothing to do
+  if (to) w.cells.add(b);             // first, so that shared cells never empty
+  bool emptied = false;
+  if (from.x0 <= from.x1 && from.y0 <= from.y1) {
+    // Cells emptied before a collection that has run since are gone, as in bump.
+    if (!sentinelAlive()) w.cells.collect();
+    emptied = w.cells.remove(from);
+  }
+  from = b;
+  return emptied;
+}
 /// Moves the item in `slot` to `to` in bump's cells (null: removed); where it was is cached per
 /// slot. Emptied cells stay counted until the next garbage collection, as bump's weak cell
 /// tables do.
@@ -235,6 +267,13 @@ tv::Leg luaResponse(void* world, const tv::Collision& c, tv::Vec2 goal);
 
 // Registration (module.cpp builds the tables from these).
 void registerWorldMethods(lua_State* L, int methodsIdx);   // bump's World API
+/// Under LuaJIT, replaces the hot methods in `methodsIdx` (getRect, move, check, go,
+/// getCollision) by Lua functions over the FFI that fall back to the C functions they replace
+/// (fast_path.cpp). Does nothing where `ffi` is missing or TV_LUA_FFI=0.
+void installFastPath(lua_State* L, int methodsIdx);
+/// Sets `fastPath` (true when installed) and `_capi` (the C functions the fast path replaced:
+/// move, check, getRect, go, getCollision; nil without it) in the table at moduleIdx.
+void pushFastPathInfo(lua_State* L, int moduleIdx);
 void registerExtraMethods(lua_State* L, int methodsIdx);   // tunnelvision's additions
 void registerRecordingMethods(lua_State* L, int methodsIdx);  // startRecording, frame...
 void pushValidateRecording(lua_State* L);                     // tunnelvision.validateRecording

@@ -21,6 +21,7 @@ void pushMethods(lua_State* L) {
   tvlua::registerWorldMethods(L, methods);
   tvlua::registerExtraMethods(L, methods);
   tvlua::registerRecordingMethods(L, methods);
+  tvlua::installFastPath(L, methods);
 }
 
 // Pushes newWorld over `methods`: worlds with bump.lua's rules or the core's; `responses` is
@@ -110,6 +111,7 @@ TV_LUA_EXPORT int luaopen_tunnelvision(lua_State* L) {
   tvlua::pushRecordingItems(L);
   lua_setfield(L, tv, "recordingItems");
   tvlua::pushAutoRecord(L, tv);
+  tvlua::pushFastPathInfo(L, tv);
   lua_pushliteral(L, "tunnelvision 0.2");
   lua_setfield(L, tv, "_VERSION");
   // So that `require 'tunnelvision.bump'` after `require 'tunnelvision'` finds this module even

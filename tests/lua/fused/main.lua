@@ -1,7 +1,8 @@
 -- A game that ships tunnelvision the way core/lua/README.md says ("Shipping a LÖVE game with
--- it"): the module beside the game, found through package.cpath before the first require; the
--- shim tunnelvision/bump.lua inside the .love. tests/lua/fused_game.cmake zips this folder into a
--- .love, fuses it with the love executable, and runs both with the module beside them.
+-- it"): the module beside the game, found through package.cpath before the first require;
+-- tunnelvision/bump.lua (which the build puts beside the module) inside the .love.
+-- tests/lua/fused_game.cmake zips this folder into a .love, fuses it with the love executable,
+-- and runs both with the module beside them.
 local ext = love.system.getOS() == 'Windows' and 'dll' or 'so'
 package.cpath = love.filesystem.getSourceBaseDirectory() .. '/?.' .. ext .. ';' .. package.cpath
 local bump = require 'tunnelvision.bump'

@@ -13,7 +13,10 @@
 #
 # Exit 0: every check held; 1: one failed (said why); 77: the game is not in GAMES_DIR (skip).
 # TV_GAME_FRAMES overrides the profile's frame count; TV_GAME_AS_SHIPPED=1 also reports how far
-# bump.lua as shipped (its hash orders left as they fall) repeats itself.
+# bump.lua as shipped (its hash orders left as they fall) repeats itself; TV_GAME_TIMING=N also
+# times love.update in N rounds of three runs taking turns — bump.lua, tunnelvision.bump through
+# the FFI (LÖVE's LuaJIT: the module's fast path), and through the C API (TV_LUA_FFI=0) — none
+# recording, and prints the best of each.
 set -u
 profile=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 games=$2
@@ -67,6 +70,7 @@ EOF
     rm -f "$work"/recording*.tvrec
     record=(TV_RECORD="$work/recording.tvrec")
   fi
+  [ "${TV_LUA_FFI_RUN:-}" = 0 ] && record+=(TV_LUA_FFI=0)
   env "${record[@]}" TV_HARNESS="$work/$tag.config.lua" SDL_VIDEODRIVER=offscreen \
     SDL_AUDIODRIVER=dummy ALSOFT_DRIVERS=null timeout 1200 love "$rundir" \
     > "$work/$tag.out" 2>&1
@@ -121,6 +125,25 @@ grep '^end' "$work/tunnelvision.log" | sed 's/^end done/tunnelvision.bump:/'
 grep '^end' "$work/bump.log" | sed 's/^end done/bump.lua:         /'
 most=$(sed -n 's/^end done .* mostCollisions \([0-9]*\).*/\1/p' "$work/tunnelvision.log")
 [ "${most:-99}" -lt 64 ] || fail "$name: a move returned $most collisions (a wedged body)"
+
+# love.update's CPU time, the three ways taking turns (the runs above recorded or dumped).
+if [ -n "${TV_GAME_TIMING:-}" ]; then
+  best() { sed -n 's/^end done .* update \([0-9.]*\).*/\1/p' "$work/$1.log"; }
+  declare -A fastest=()
+  for round in $(seq 1 "$TV_GAME_TIMING"); do
+    for way in bump ffi capi; do
+      case $way in
+        bump) play bump-as-shipped "time.$way" || exit 1 ;;
+        ffi) play tunnelvision-timing "time.$way" || exit 1 ;;
+        capi) TV_LUA_FFI_RUN=0 play tunnelvision-timing "time.$way" || exit 1 ;;
+      esac
+      t=$(best "time.$way")
+      if [ -z "${fastest[$way]:-}" ] || awk "BEGIN{exit !($t < ${fastest[$way]})}"; then fastest[$way]=$t; fi
+    done
+  done
+  awk -v b="${fastest[bump]}" -v f="${fastest[ffi]}" -v c="${fastest[capi]}" -v n="$frames" 'BEGIN{
+    printf "love.update, best of %s rounds, %d frames: bump.lua %.3f s, tunnelvision.bump FFI %.3f s (%.2fx), C API %.3f s (%.2fx)\n", ENVIRON["TV_GAME_TIMING"], n, b, f, b / f, c, b / c }'
+fi
 
 # The recordings TV_RECORD made, with no code in the game.
 shopt -s nullglob

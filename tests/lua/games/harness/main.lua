@@ -90,7 +90,7 @@ end
 local bumpModule
 local function provideBump()
   if bumpModule == nil then
-    if config.mode == 'tunnelvision' then
+    if config.mode:match('^tunnelvision') then  -- tunnelvision, tunnelvision-timing
       package.cpath = config.moduleDir .. '/?.so;' .. package.cpath
       package.path = config.moduleDir .. '/?.lua;' .. package.path
       bumpModule = wrapModule(require('tunnelvision.bump'))
@@ -163,9 +163,12 @@ local function press(key, down)
   if callback then callback(key, key, false) end
 end
 
+-- CPU seconds spent in love.update, the game's own (TV_GAME_TIMING in run.sh compares them).
+local updateSeconds = 0
+
 local function finish(how)
-  log:write(('end %s moves %d collisions %d mostCollisions %d movesOver16 %d\n'):format(
-    how, stats.moves, stats.collisions, stats.mostCollisions, stats.movesOver16))
+  log:write(('end %s moves %d collisions %d mostCollisions %d movesOver16 %d update %.6f\n'):format(
+    how, stats.moves, stats.collisions, stats.mostCollisions, stats.movesOver16, updateSeconds))
   log:close()
 end
 
@@ -190,7 +193,11 @@ function love.run()
     end
     frame = frame + 1
     for _, e in ipairs(profile.input(frame) or {}) do press(e[2], e[1] == 'press') end
-    if love.update then love.update(dt) end
+    if love.update then
+      local t0 = os.clock()
+      love.update(dt)
+      updateSeconds = updateSeconds + (os.clock() - t0)
+    end
     if love.graphics and love.graphics.isActive() then
       love.graphics.origin()
       love.graphics.clear(love.graphics.getBackgroundColor())
