@@ -10,6 +10,7 @@
 #include <string>
 
 #include "tv/error.hpp"
+#include "tv/outcome.hpp"
 
 namespace tv::sim {
 
@@ -83,6 +84,7 @@ Simulation::Simulation(std::string_view scene, std::string_view mover)
     : Simulation(findScene(scene), findScene(scene).defaults(), parseMover(mover)) {}
 
 void Simulation::build(SceneSetup setup) {
+  events_.clear();
   world_ = World(setup.cellSize);
   gravity_ = setup.gravity;
   rules_ = std::move(setup.rules);
@@ -193,6 +195,7 @@ void Simulation::step(double dt) {
 void Simulation::stepOrThrow(double dt) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
   traceValid_ = false;
+  events_.clear();
   TickContext ctx = context(dt);
   if (rules_) rules_->control(ctx);
   if (rules_ && rules_->batched()) {
@@ -201,8 +204,10 @@ void Simulation::stepOrThrow(double dt) {
     moveOneByOne(ctx, dt);
   }
   if (rules_) {
+    const Counters before = counters_;
     rules_->afterTick(ctx);
     for (std::size_t i = 0; i < bodies_.size(); ++i) syncWorld(i);
+    noteCounted(before, -1, {}, 0);
   }
   ++tick_;
   record();
@@ -234,10 +239,53 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
     counters_.collisions += r.collisions.size();
     if (traced) noteTrace();
     if (rules_) {
+      const Counters before = counters_;
       rules_->afterMove(ctx, i, goal, r.collisions);
       syncWorld(i);
+      noteCounted(before, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
+                  r.collisions.size());
+    } else if (manyCollisions_ > 0 && r.collisions.size() > manyCollisions_) {
+      noteCounted(counters_, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
+                  r.collisions.size());
     }
   }
+}
+
+void Simulation::noteCounted(const Counters& before, std::int64_t body, const Rect& start,
+                             std::size_t collisions) {
+  // Most moves count nothing: one compare of the failure counters and out.
+  const Counters& now = counters_;
+  const bool counted = now.tunnelled != before.tunnelled || now.farPushOuts != before.farPushOuts ||
+                       now.misses != before.misses || now.escapes != before.escapes ||
+                       now.overlaps != before.overlaps || now.jitter != before.jitter ||
+                       now.snags != before.snags;
+  const bool many = body >= 0 && manyCollisions_ > 0 && collisions > manyCollisions_;
+  if (!counted && !many) return;
+  TickEvent e;
+  e.tick = tick_ + 1;
+  e.body = body;
+  e.collisions = collisions;
+  MoveOutcome outcome;
+  if (body >= 0 && (now.tunnelled != before.tunnelled || now.overlaps != before.overlaps)) {
+    const Body& b = bodies_[static_cast<std::size_t>(body)];
+    const auto filter = [this](ItemId item, ItemId other) { return respond(item, other); };
+    outcome = judgeMove(world_, b.item, start, b.rect, filter);
+  }
+  const auto add = [&](Counted what, std::uint64_t was, std::uint64_t is, ItemId other) {
+    if (is == was) return;
+    e.what = what;
+    e.count = is - was;
+    e.other = other;
+    events_.push_back(e);
+  };
+  add(Counted::tunnelled, before.tunnelled, now.tunnelled, outcome.passedThrough);
+  add(Counted::farPushOut, before.farPushOuts, now.farPushOuts, outcome.passedThrough);
+  add(Counted::missed, before.misses, now.misses, {});
+  add(Counted::escaped, before.escapes, now.escapes, {});
+  add(Counted::overlapped, before.overlaps, now.overlaps, outcome.endedInside);
+  add(Counted::jittered, before.jitter, now.jitter, {});
+  add(Counted::snagged, before.snags, now.snags, {});
+  if (many) add(Counted::manyCollisions, 0, 1, {});
 }
 
 void Simulation::moveBatched(TickContext& ctx, double dt) {
@@ -261,8 +309,11 @@ void Simulation::moveBatched(TickContext& ctx, double dt) {
     ++counters_.moves;
     counters_.collisions += out.collisions.size();
     if (rules_) {
+      const Counters before = counters_;
       rules_->afterMove(ctx, i, batchMoves_[k].goal, out.collisions);
       syncWorld(i);
+      noteCounted(before, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
+                  out.collisions.size());
     }
   }
 }
@@ -302,6 +353,7 @@ void Simulation::record() {
 }
 
 void Simulation::restore(std::uint64_t t) {
+  events_.clear();
   const Snapshot& s = ring_[t % ring_.size()];
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];

@@ -40,6 +40,32 @@ struct SimConfig {
   double maxFrameTime = 0.25;
 };
 
+/// A counter the scene's rules raised, and whose move raised it.
+enum class Counted : std::uint8_t {
+  tunnelled,       ///< Counters::tunnelled
+  farPushOut,      ///< Counters::farPushOuts
+  missed,          ///< Counters::misses
+  escaped,         ///< Counters::escapes
+  overlapped,      ///< Counters::overlaps
+  jittered,        ///< Counters::jitter
+  snagged,         ///< Counters::snags
+  manyCollisions,  ///< not a counter: a move reported more than `manyCollisions()` collisions
+};
+
+/// Something counted in a tick: the tools list these to go straight to what failed.
+struct TickEvent {
+  std::uint64_t tick = 0;  ///< the tick's number once it has run (ticks() after it)
+  /// The body whose move the rules were judging when they counted (afterMove); -1 when counted
+  /// after every body moved (afterTick), which is no one body's.
+  std::int64_t body = -1;
+  Counted what = Counted::tunnelled;
+  std::uint64_t count = 1;  ///< how much the counter rose
+  /// What the move passed through (tunnelled, farPushOut) or ended inside (overlapped), as
+  /// tv::judgeMove finds it with the simulation's filter; invalid when unknown or not asked.
+  ItemId other;
+  std::size_t collisions = 0;  ///< collisions the move reported
+};
+
 /// What tracing saw (not part of the state: tracing never changes results).
 struct TraceStats {
   std::uint64_t moves = 0;       ///< traced moves
@@ -130,6 +156,14 @@ class Simulation {
   [[nodiscard]] const MoveTrace* lastTrace() const { return traceValid_ ? &trace_ : nullptr; }
   [[nodiscard]] const TraceStats& traceStats() const { return traceStats_; }
 
+  // -- what was counted ----------------------------------------------------------------------
+  /// What the rules counted in the last tick, body by body, in the order it happened (empty
+  /// after a seek, a step back or a restart). Not part of the state; costs a few compares a move.
+  [[nodiscard]] std::span<const TickEvent> events() const { return events_; }
+  /// Moves reporting more collisions than `n` are listed in events() (0, the default: none).
+  void setManyCollisions(std::size_t n) { manyCollisions_ = n; }
+  [[nodiscard]] std::size_t manyCollisions() const { return manyCollisions_; }
+
  private:
   struct BodyState {
     Vec2 position;
@@ -154,6 +188,8 @@ class Simulation {
   void restore(std::uint64_t t);
   void syncWorld(std::size_t i);
   void noteTrace();
+  void noteCounted(const Counters& before, std::int64_t body, const Rect& start,
+                   std::size_t collisions);
   [[nodiscard]] ResponseId respond(ItemId item, ItemId other) const;
   [[nodiscard]] TickContext context(double dt);
 
@@ -187,6 +223,8 @@ class Simulation {
   bool traceValid_ = false;
   TraceStats traceStats_;
 
+  std::vector<TickEvent> events_;
+  std::size_t manyCollisions_ = 0;
   std::vector<BatchMove> batchMoves_;
   std::vector<std::size_t> batchBodies_;
 };
