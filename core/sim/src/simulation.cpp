@@ -83,6 +83,13 @@ Simulation::Simulation(const SceneDef& scene, const Params& params, MoverSpec mo
 Simulation::Simulation(std::string_view scene, std::string_view mover)
     : Simulation(findScene(scene), findScene(scene).defaults(), parseMover(mover)) {}
 
+std::optional<std::size_t> Simulation::solidOf(ItemId id) const {
+  // Solids are the world's first items, added in order: their slots are 0..n-1 (a rebuild
+  // reuses them), so the slot finds the solid and the generation confirms it.
+  if (id.index < solidItems_.size() && solidItems_[id.index] == id) return id.index;
+  return std::nullopt;
+}
+
 void Simulation::build(SceneSetup setup) {
   events_.clear();
   world_ = World(setup.cellSize);
@@ -90,6 +97,9 @@ void Simulation::build(SceneSetup setup) {
   rules_ = std::move(setup.rules);
   solids_ = std::move(setup.solids);
   bodies_ = std::move(setup.bodies);
+  solidNames_ = std::move(setup.solidNames);
+  bodyNames_ = std::move(setup.bodyNames);
+  solidItems_.clear();
   const std::size_t items = solids_.size() + bodies_.size();
   bodyBySlot_.assign(items, -1);
   tagBySlot_.assign(items, 0);
@@ -103,6 +113,7 @@ void Simulation::build(SceneSetup setup) {
     const ItemId id = world_.add(s.rect);
     grow(id);
     tagBySlot_[id.index] = s.tag;
+    solidItems_.push_back(id);
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];

@@ -40,6 +40,7 @@ struct LevelBody {
   std::optional<double> speed;
   bool facingLeft = false;  ///< walkers and players: start walking left
   JumpScript jump;          ///< players only
+  std::string name;         ///< what the tools call it (a map object's name); empty: "body N"
 };
 
 struct Level {
@@ -54,6 +55,9 @@ struct Level {
   std::optional<Rect> camera;  ///< what to frame; nullopt: everything in the level
   std::optional<std::string> mover;  ///< the mover the file suggests, if any
   std::vector<sim::Solid> solids;
+  /// What the tools call each solid (a map object's name), by index; missing or empty:
+  /// unnamed ("tile 12").
+  std::vector<std::string> solidNames;
   std::vector<LevelBody> bodies;
   /// A built-in scene whose rules steer and count (a file exported by tv-run --export-scene),
   /// and the values of all its parameters; empty: the level's own rules (the motions above).

@@ -18,6 +18,8 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "tv/batch.hpp"
@@ -146,6 +148,16 @@ class Simulation {
   /// The scene's fixed step, s.
   [[nodiscard]] double dt() const { return dt_; }
   [[nodiscard]] Rect camera() const { return scene_.camera(params_); }
+  /// What the tools call solid `i` and body `i`: the scene's own name for it (a map object's),
+  /// else empty.
+  [[nodiscard]] std::string_view solidName(std::size_t i) const {
+    return i < solidNames_.size() ? std::string_view(solidNames_[i]) : std::string_view();
+  }
+  [[nodiscard]] std::string_view bodyName(std::size_t i) const {
+    return i < bodyNames_.size() ? std::string_view(bodyNames_[i]) : std::string_view();
+  }
+  /// The solid whose item this is (solids are added first, in order), if it is one.
+  [[nodiscard]] std::optional<std::size_t> solidOf(ItemId id) const;
 
   // -- tracing -------------------------------------------------------------------------------
   /// Records a MoveTrace of body `i`'s move every tick (nullopt: off, the default). Tracing
@@ -205,6 +217,8 @@ class Simulation {
 
   std::vector<Solid> solids_;
   std::vector<Body> bodies_;
+  std::vector<std::string> solidNames_, bodyNames_;
+  std::vector<ItemId> solidItems_;
   Vec2 gravity_;
   std::shared_ptr<const SceneRules> rules_;
   std::vector<std::int32_t> bodyBySlot_;
