@@ -7,7 +7,7 @@
 #include <string>
 
 #include "tv/ui/picture_options.hpp"
-#include "tv/ui/recording_still.hpp"
+#include "tv/ui/still.hpp"
 
 namespace tv::viewer {
 
@@ -28,6 +28,10 @@ struct ViewerOptions {
   bool sweep = false;
   /// Draw compared movers in one view instead of side by side.
   bool overlay = false;
+  /// Open at the run's first failure (traced, centred, zoomed), once the checks have found it.
+  bool firstFailure = false;
+  /// The column's tab to show first.
+  std::optional<ui::Tab> tab;
 };
 
 /// Throws ui::UsageError naming the flag.

@@ -18,7 +18,15 @@ void ValidationJob::stop() {
   cancel_ = false;
 }
 
-void ValidationJob::start(const std::string& path, bool wait) {
+namespace {
+
+Replay openOrigin(const ui::ReplaySource::Origin& origin, const ReplayOptions& options) {
+  return origin.bytes ? Replay::fromBytes(*origin.bytes, options) : Replay::open(origin.path, options);
+}
+
+}  // namespace
+
+void ValidationJob::start(const ui::ReplaySource::Origin& origin, bool wait) {
   stop();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -29,20 +37,20 @@ void ValidationJob::start(const std::string& path, bool wait) {
   done_ = false;
   running_ = true;
   if (wait) {
-    run(path);
+    run(origin);
   } else {
-    thread_ = std::thread([this, path] { run(path); });
+    thread_ = std::thread([this, origin] { run(origin); });
   }
 }
 
-void ValidationJob::run(const std::string& path) {
+void ValidationJob::run(const ui::ReplaySource::Origin& origin) {
   std::optional<tv::Divergence> d;
   std::string error;
   bool cancelled = false;
   try {
     ReplayOptions o;
     o.tolerant = true;
-    Replay replay = Replay::open(path, o);
+    Replay replay = openOrigin(origin, o);
     d = replay.validate([this](std::uint64_t frame) {
       progress_ = frame;
       return !cancel_.load();
@@ -83,8 +91,8 @@ void WhatIfJob::join() {
   if (thread_.joinable()) thread_.join();
 }
 
-void WhatIfJob::start(const std::string& path, const ReplayOptions& options, double farAway,
-                      bool wait) {
+void WhatIfJob::start(const ui::ReplaySource::Origin& origin, const ReplayOptions& options,
+                      double farAway, bool wait) {
   join();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -93,11 +101,11 @@ void WhatIfJob::start(const std::string& path, const ReplayOptions& options, dou
   }
   done_ = false;
   running_ = true;
-  auto work = [this, path, options, farAway] {
+  auto work = [this, origin, options, farAway] {
     std::optional<WhatIfReport> report;
     std::string error;
     try {
-      Replay replay = Replay::open(path, options);
+      Replay replay = openOrigin(origin, options);
       report = replay.whatIf(farAway);
     } catch (const std::exception& e) {
       error = app::userMessage(e);

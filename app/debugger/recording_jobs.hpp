@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "tv/record/replay.hpp"
+#include "tv/ui/replay_source.hpp"
 
 namespace tv::viewer {
 
@@ -24,8 +25,8 @@ class ValidationJob {
   ValidationJob(const ValidationJob&) = delete;
   ValidationJob& operator=(const ValidationJob&) = delete;
 
-  /// Validates the file at `path` from the start (stops any run before). `wait`: in this thread.
-  void start(const std::string& path, bool wait);
+  /// Validates the recording from the start (stops any run before). `wait`: in this thread.
+  void start(const ui::ReplaySource::Origin& origin, bool wait);
   void stop();
 
   [[nodiscard]] bool running() const { return running_.load(); }
@@ -38,7 +39,7 @@ class ValidationJob {
   [[nodiscard]] std::string error() const;
 
  private:
-  void run(const std::string& path);
+  void run(const ui::ReplaySource::Origin& origin);
 
   std::thread thread_;
   std::atomic<bool> running_{false}, done_{false}, cancel_{false};
@@ -55,8 +56,9 @@ class WhatIfJob {
   WhatIfJob(const WhatIfJob&) = delete;
   WhatIfJob& operator=(const WhatIfJob&) = delete;
 
-  /// Re-runs the file at `path` with `options.mover`, comparing with the recording.
-  void start(const std::string& path, const ReplayOptions& options, double farAway, bool wait);
+  /// Re-runs the recording with `options.mover`, comparing with what it recorded.
+  void start(const ui::ReplaySource::Origin& origin, const ReplayOptions& options, double farAway,
+             bool wait);
   [[nodiscard]] bool running() const { return running_.load(); }
   [[nodiscard]] bool done() const { return done_.load(); }
   /// The report, once done.

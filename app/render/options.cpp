@@ -9,7 +9,7 @@ const char* const kUsage =
     "                 [--render-hz R] [--hide a,b] [--show a,b] [--frames K] [--timing]\n"
     "                 [--caption TEXT]\n"
     "                 [--PARAM VALUE ...]\n"
-    "       tv-render --open GAME.tvrec [--frame N] [--call K] [--item LABEL] [--size WxH]\n"
+    "       tv-render --open GAME.tvrec [--frame N] [--call K] [--item LABEL] [--window WxH]\n"
     "                 [--out FILE.png] [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b]\n"
     "       tv-render --list\n"
     "\n"

@@ -4,9 +4,10 @@
 
 #include "imgui.h"
 #include "tv/sim/scene.hpp"
-#include "tv/ui/layout.hpp"
 #include "tv/ui/overlays.hpp"
 #include "tv/ui/session.hpp"
+#include "tv/ui/sim_source.hpp"
+#include "tv/ui/view.hpp"
 
 namespace tv::ui {
 namespace {
@@ -41,61 +42,32 @@ class ImGuiFixture : public ::testing::Test {
   }
 };
 
-Session crowd() {
+std::unique_ptr<SimSource> crowd() {
   const sim::SceneDef& s = sim::findScene("crowd");
-  Session session(s, s.defaults(), parseMover("continuous"), 0);
-  session.advanceTo(4, 0.0);
-  return session;
-}
-
-TEST_F(ImGuiFixture, DrawsOnlyWhatIsInView) {
-  Session s = crowd();
-  const WorldPicture pic = s.picture();
-  Camera all, empty;
-  all.frame(s.sim().camera(), {0, 0}, {800, 600});
-  empty.frame({-5000, -5000, 100, 100}, {0, 0}, {800, 600});  // nothing out there
-  Overlays on;
-  on.grid = on.pixelGrid = false;  // lines that cover any view, empty or not
-  const int full = verticesFor(all, pic, on);
-  const int none = verticesFor(empty, pic, on);
-  EXPECT_GT(full, 5000);
-  // Only the background of an empty view remains.
-  EXPECT_LE(none, 4);
-}
-
-TEST_F(ImGuiFixture, EachOverlayIsAToggle) {
-  Session s = crowd();
-  const WorldPicture pic = s.picture();
-  Camera cam;
-  cam.frame(s.followView(64), {0, 0}, {800, 600});
-  Overlays on;
-  const int everything = verticesFor(cam, pic, on);
-  for (const OverlayToggle& t : overlayToggles()) {
-    Overlays off = on;
-    off.*t.flag = false;
-    EXPECT_LE(verticesFor(cam, pic, off), everything) << t.name;
-  }
-  Overlays nothing;
-  for (const OverlayToggle& t : overlayToggles()) nothing.*t.flag = false;
-  EXPECT_LT(verticesFor(cam, pic, nothing), everything / 4);
+  auto source = std::make_unique<SimSource>(s, s.defaults(), MoverSpec{});
+  source->traceBody(0);
+  source->advanceTo(4, 0.0);
+  return source;
 }
 
 TEST_F(ImGuiFixture, DrawingTheDebuggerLeavesTheSimulationAlone) {
-  Session s = crowd();
-  const std::uint64_t before = s.sim().stateHash();
-  DebuggerState st;
-  syncDraft(st, s);
-  st.frameView = s.sim().camera();
+  Session s(crowd());
+  const sim::Simulation& sim = s.primary().sim()->simulation();
+  const std::uint64_t before = sim.stateHash();
+  ViewState view;
+  syncPanels(view, s);
+  syncDraft(view.panels[0], *s.primary().sim());
+  view.panels[0].frameView = sim.camera();
   int vertices = 0;
   for (int f = 0; f < 3; ++f) {
     if (f > 0) ImGui::NewFrame();  // the fixture began the first
-    (void)debuggerLayout(s, st, ImGui::GetIO().DisplaySize);
+    (void)sessionView(s, view, {0, 0}, ImGui::GetIO().DisplaySize);
     ImGui::Render();
     vertices = ImGui::GetDrawData()->TotalVtxCount;
   }
   ImGui::NewFrame();  // for the fixture's EndFrame
-  EXPECT_EQ(s.sim().stateHash(), before);
-  EXPECT_EQ(s.sim().ticks(), 4u);
+  EXPECT_EQ(sim.stateHash(), before);
+  EXPECT_EQ(sim.ticks(), 4u);
   EXPECT_GT(vertices, 1000);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// The fixed windows every debugger layout places (internal to tv_ui): the scene's layout
-// (layout.cpp) and a recording's (recording_view.cpp) build their screens from these.
+// The fixed windows every layout places (internal to tv_ui): view.cpp builds its screens
+// from these.
 
 #include "imgui.h"
 

@@ -51,4 +51,8 @@ struct PictureOptions {
 /// Throws UsageError naming the flag. Unknown `--NAME VALUE` pairs are kept as parameters.
 [[nodiscard]] PictureOptions parsePictureOptions(int argc, char** argv);
 
+/// What --list prints, the same in tv-render and tv-debugger: every scene with its category,
+/// description and parameters (as flags, with their defaults), then every mover.
+[[nodiscard]] std::string sceneAndMoverList();
+
 }  // namespace tv::ui

@@ -1,0 +1,138 @@
+// Straight to what failed: the Failures tab lists every move that failed, for every source; a
+// click (and every "go") goes to that frame, traces that item, centres and zooms on it; the
+// inspector and the world say in words what happened.
+#include <algorithm>
+
+#include "driver.hpp"
+#include "tv/ui/sim_source.hpp"
+
+namespace tv::viewer {
+namespace {
+
+// bullets-wall at 1920 px/s with the naive mover: most of the 1000 bullets pass the wall, each
+// in its own lane, in the tick it reaches it.
+//
+//    lane k   [b]--32px-->  |####|  [b]
+TEST_F(DebuggerDriver, TheFailuresTabListsEveryTunnelledBulletByName) {
+  open({"--scene", "bullets-wall", "--mover", "discrete", "--tick", "1"});
+  const ui::FailureList& list = dbg().checks().failures();
+  ASSERT_TRUE(list.complete);
+  // One row per tunnel the scene counts, each naming its body and the wall tile it passed.
+  std::uint64_t rows = 0;
+  for (const auto& e : list.entries) {
+    if (e.failure.kind != ui::FailureKind::tunnelled) continue;
+    ++rows;
+    EXPECT_TRUE(e.failure.item.valid());
+    EXPECT_EQ(e.failure.what.rfind("tunnelled through wall tile", 0), 0u) << e.failure.what;
+  }
+  // As many as the scene counts over the whole run.
+  const sim::SceneDef& scene = sim::findScene("bullets-wall");
+  sim::Simulation whole(scene, scene.defaults(), MoverSpec{.kind = MoverKind::discrete});
+  (void)whole.run(1000);
+  EXPECT_EQ(rows, whole.counters().tunnelled);
+  EXPECT_GT(rows, 500u);
+}
+
+TEST_F(DebuggerDriver, AnExactMoverListsNoFailure) {  // the negative control
+  open({"--scene", "bullets-wall", "--mover", "continuous", "--tick", "1"});
+  ASSERT_TRUE(dbg().checks().failures().complete);
+  EXPECT_TRUE(dbg().checks().failures().entries.empty());
+}
+
+// A click goes to that frame, traces that item, centres and zooms on it, and the inspector
+// shows the failing panel's move, in words.
+TEST_F(DebuggerDriver, AClickOnAFailureGoesThereTracesCentresAndZooms) {
+  open({"--scene", "bullets-wall", "--compare", "continuous,discrete", "--tick", "1", "--body",
+        "0", "--view", "scene"});
+  const auto& entries = dbg().checks().failures().entries;
+  ASSERT_FALSE(entries.empty());
+  // The last listed: a late one, in the discrete panel (panel 1).
+  const std::size_t pick = entries.size() - 1;
+  const ui::FailureList::Entry e = entries[pick];
+  EXPECT_EQ(e.panel, 1u);
+  const double homeScale = dbg().panels()[0].camera.scale();
+  dbg().goToFailure(pick);
+  frames(3);
+  EXPECT_EQ(dbg().currentTick(), e.failure.frame);
+  EXPECT_EQ(dbg().session().traced(), e.failure.item);
+  EXPECT_EQ(dbg().view().inspected, 1u);
+  EXPECT_TRUE(dbg().following());
+  // Centred on the traced item, and zoomed in from the scene's whole view.
+  const Rect item = dbg().session().panel(1).world().rect(e.failure.item);
+  const Rect view = dbg().panels()[1].camera.view();
+  EXPECT_TRUE(contains(view, item.center()));
+  EXPECT_GT(dbg().panels()[1].camera.scale(), homeScale * 4.0);
+  // The inspector says what happened, in the discrete panel's words.
+  const std::string details = drawnText("Details");
+  EXPECT_NE(details.find("tunnelled through wall tile"), std::string::npos) << details;
+}
+
+// "first failure: tick 1 ... go" used to go to tick 1 with body 2 still traced, and body 2 only
+// tunnels at tick 2: all three panels looked the same. Now "go" shows a body that failed there.
+TEST_F(DebuggerDriver, GoOnTheFirstFailureShowsABodyThatFailedThere) {
+  open({"--scene", "bullets-wall", "--compare", "discrete,substep-discrete,continuous", "--tick",
+        "2", "--body", "2", "--view", "follow"});
+  ASSERT_TRUE(dbg().checks().firstFailure().has_value());
+  const std::uint64_t first = *dbg().checks().firstFailure();
+  dbg().command(Command::firstFailure);
+  frames(2);
+  EXPECT_EQ(dbg().currentTick(), first);
+  const auto traced = dbg().session().traced();
+  ASSERT_TRUE(traced.has_value());
+  // The traced body's move in that tick is one the scene counted as a failure.
+  const ui::Source& failing = dbg().session().panel(dbg().view().inspected);
+  ASSERT_FALSE(failing.history().empty());
+  EXPECT_EQ(failing.history().back().tick, first);
+  EXPECT_TRUE(failing.failureOf(failing.history().back()).has_value());
+  // The world says it too.
+  const std::string world = drawnText("###panel");
+  EXPECT_NE(world.find("tunnelled through"), std::string::npos) << world;
+}
+
+// A recording's what-if: the Failures tab lists each re-run bullet that tunnelled; "go" beside
+// "runs differ" traces the item whose move ended elsewhere first (it kept the player traced).
+TEST_F(DebuggerDriver, ARecordingsWhatIfListsItsTunnelsAndGoTracesWhatDiffers) {
+  open({sampleRecording(), "--frame", "60", "--what-if", "discrete"});
+  const auto& entries = dbg().checks().failures().entries;
+  ASSERT_FALSE(entries.empty());
+  EXPECT_TRUE(std::all_of(entries.begin(), entries.end(),
+                          [](const auto& e) { return e.panel == 1; }))
+      << "the recorded run validates: its failures are none";
+  const std::string player = "player";
+  dbg().show(60, std::nullopt, player);
+  ASSERT_TRUE(dbg().checks().whatIf().has_value());
+  const MoveDifference first = dbg().checks().whatIf()->differences.front();
+  dbg().goToDifference();
+  frames(2);
+  EXPECT_EQ(dbg().currentTick(), first.frame);
+  EXPECT_EQ(dbg().session().traced(), first.item);
+  EXPECT_NE(dbg().session().primary().describe(first.item), player);
+  // And a click on a listed tunnel shows that bullet's re-run move, the call selected.
+  dbg().goToFailure(0);
+  frames(2);
+  EXPECT_EQ(dbg().currentTick(), entries[0].failure.frame);
+  EXPECT_EQ(dbg().session().call(), entries[0].failure.call);
+  EXPECT_EQ(dbg().session().traced(), entries[0].failure.item);
+  EXPECT_NE(dbg().session().panel(1).callTrace(), nullptr);
+}
+
+// The inspector and the world say what happened to the traced move.
+TEST_F(DebuggerDriver, TheInspectorAndTheWorldSayWhatHappened) {
+  open({"--scene", "bullets-wall", "--mover", "discrete", "--tick", "2", "--body", "2", "--view",
+        "follow"});
+  frames(2);
+  const std::string inspector = drawnText("Details");
+  EXPECT_NE(inspector.find("tunnelled through wall tile"), std::string::npos) << inspector;
+  const std::string world = drawnText("World");
+  EXPECT_NE(world.find("tunnelled through wall tile"), std::string::npos) << world;
+  // The exact sweep: stopped against the wall, in green words.
+  open({"--scene", "bullets-wall", "--mover", "continuous", "--tick", "2", "--body", "2", "--view",
+        "follow"});
+  frames(2);
+  const std::string stopped = drawnText("World");
+  EXPECT_NE(stopped.find("stopped against wall tile"), std::string::npos) << stopped;
+  EXPECT_EQ(stopped.find("tunnelled"), std::string::npos) << stopped;
+}
+
+}  // namespace
+}  // namespace tv::viewer
