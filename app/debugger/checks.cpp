@@ -208,7 +208,7 @@ void Checks::collect() {
                    });
   list_.complete = !running();
   const ui::ReplaySource* r = session_->primary().replay();
-  list_.looked = r ? r->frames() : 0;
+  list_.looked = r && r->frames() > 0 ? r->frames() - 1 : 0;  // the last frame looked at
   failure_.reset();
   failureText_.clear();
   for (const auto& e : list_.entries) {

@@ -271,7 +271,9 @@ void Debugger::buildScene(const sim::SceneDef& scene, const sim::Params& params,
 
 void Debugger::loadScene(const sim::SceneDef& scene) {
   try {
-    std::vector<MoverSpec> m = movers();
+    // A scene keeps the movers compared; from a recording (whose panels are what-ifs) it
+    // starts with the exact sweep.
+    std::vector<MoverSpec> m = isScene() ? movers() : std::vector<MoverSpec>{};
     if (m.empty()) m = {MoverSpec{.kind = MoverKind::continuous}};
     buildScene(scene, scene.defaults(), std::move(m), 0, ui::SourceKind::scene);
     if (session_->primary().sim()->tracedBody() == std::nullopt &&
@@ -289,7 +291,7 @@ void Debugger::openFile(const std::string& path) {
   try {
     const sim::SceneDef& scene = file.scene();  // throws naming the file, JSON path and value
     files_.push_back(file);
-    std::vector<MoverSpec> m = movers();
+    std::vector<MoverSpec> m = isScene() ? movers() : std::vector<MoverSpec>{};
     if (const auto suggested = file.mover()) m = {*suggested};
     if (m.empty()) m = {MoverSpec{.kind = MoverKind::continuous}};
     buildScene(scene, scene.defaults(), std::move(m), 0, ui::SourceKind::level);
@@ -770,6 +772,7 @@ void Debugger::run(Command c) {
       break;
     case Command::help:
       showHelp_ = !showHelp_;
+      helpPlacing_ = showHelp_ ? 3 : 0;
       break;
     case Command::quit:
       quit_ = true;

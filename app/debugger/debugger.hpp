@@ -60,7 +60,10 @@ class Debugger {
   /// Freezes anything that reads a clock out of the picture (screenshots), and runs the checks
   /// to their end before anything is drawn.
   void setPinned(bool pinned);
-  void openHelp() { showHelp_ = true; }
+  void openHelp() {
+    showHelp_ = true;
+    helpPlacing_ = 3;
+  }
   /// What a command does, as its key or menu item would (tests drive the debugger with it).
   void command(Command c) { run(c); }
   /// What a parameter's slider does on release: sets the draft and re-runs to the same tick.
@@ -160,6 +163,7 @@ class Debugger {
   double frameMs_ = 0.0;  // wall time per frame, smoothed, for the menu bar
   bool follow_ = false;
   bool showHelp_ = false;
+  int helpPlacing_ = 3;  // frames Help is still placed over the column's tabs (the layout settles)
   bool showSweep_ = false;
   bool showWhatIf_ = false;
   bool openPicker_ = false;

@@ -101,11 +101,10 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   // After the view, so a panel that runs long never hides the timeline.
   drawTimeline(display, bottom);
   if (showHelp_) {
-    // Over the world's lower left: the controls on the right and the traced move (framed in the
-    // middle) stay in view.
-    const float w = std::clamp(display.x * 0.4f, 360.0f, 520.0f);
-    const float h = std::max(size.y * 0.62f, 200.0f);
-    drawHelp(&showHelp_, {8.0f, top + size.y - h - 8.0f}, {w, h});
+    // Over the column's tabs: the world (the moment that matters) and the controls above them
+    // stay in view; a person who wants it elsewhere drags it.
+    drawHelp(&showHelp_, view_.tabsPos, view_.tabsSize, helpPlacing_ > 0);
+    if (helpPlacing_ > 0) --helpPlacing_;
   }
   if (showSweep_ && scene_) drawSweep();
   if (showWhatIf_) drawWhatIfDialog();

@@ -61,10 +61,9 @@ const char* keysOf(Command c) {
   return "";
 }
 
-void drawHelp(bool* open, ImVec2 pos, ImVec2 size) {
-  // Over the column of controls, beside the world: the picture it explains stays in view.
-  ImGui::SetNextWindowPos(pos, ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(size, ImGuiCond_Appearing);
+void drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place) {
+  ImGui::SetNextWindowPos(pos, place ? ImGuiCond_Always : ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(size, place ? ImGuiCond_Always : ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(1.0f);  // over the panel: its labels must not show through
   if (!ImGui::Begin("Help (F1)", open, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();

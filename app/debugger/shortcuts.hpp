@@ -47,7 +47,8 @@ struct Shortcut {
 /// The keys of `c`, e.g. "Ctrl+O".
 [[nodiscard]] const char* keysOf(Command c);
 
-/// The Help window: every shortcut and the mouse; first placed at `pos`, `size`.
-void drawHelp(bool* open, ImVec2 pos, ImVec2 size);
+/// The Help window: every shortcut and the mouse; placed at `pos`, `size` while `place` (its
+/// first frames, while the layout it goes over settles), then where the person moves it.
+void drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place);
 
 }  // namespace tv::viewer

@@ -178,46 +178,62 @@ void failuresContents(std::span<Source* const> panels, const FailureList& list, 
   if (list.entries.empty()) return;
   ImGui::TextColored(colour(pal::kDim), "click one: its %s, traced, centred and zoomed",
                      panels.empty() ? "frame" : frameWord(*panels.front()));
+  // Two lines a row: where and who, then what happened with the column's whole width. A few
+  // thousand rows wrap what does not fit; more are drawn only where the list is scrolled to
+  // (one fixed height), the whole text on hover.
   const bool several = panels.size() > 1;
-  if (!ImGui::BeginTable("failures", several ? 4 : 3, kTable)) return;
-  ImGui::TableSetupScrollFreeze(0, 1);
-  ImGui::TableSetupColumn(panels.empty() ? "frame" : frameWord(*panels.front()),
-                          ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  if (several) ImGui::TableSetupColumn("mover", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-  ImGui::TableSetupColumn("item", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-  ImGui::TableSetupColumn("what happened", ImGuiTableColumnFlags_WidthStretch, 3.4f);
-  ImGui::TableHeadersRow();
-  ImGuiListClipper clipper;
-  clipper.Begin(static_cast<int>(list.entries.size()));
-  while (clipper.Step()) {
-    for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
-      const FailureList::Entry& e = list.entries[static_cast<std::size_t>(r)];
-      const Source& s = *panels[std::min(e.panel, panels.size() - 1)];
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      char label[48];
-      if (e.failure.call) {
-        std::snprintf(label, sizeof label, "%" PRIu64 ".%u##f%d", e.failure.frame, *e.failure.call, r);
-      } else {
-        std::snprintf(label, sizeof label, "%" PRIu64 "##f%d", e.failure.frame, r);
-      }
-      if (ImGui::Selectable(label, false, ImGuiSelectableFlags_SpanAllColumns))
-        a.failure = static_cast<std::size_t>(r);
-      const std::string item = e.failure.item.valid() ? s.describe(e.failure.item) : "-";
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("%s: %s %s", s.moverName().c_str(), item.c_str(), e.failure.what.c_str());
-      if (several) {
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(s.moverName().c_str());
-      }
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(item.c_str());
-      ImGui::TableNextColumn();
-      ImGui::TextColored(colour(e.failure.kind == FailureKind::busy ? pal::kRender : pal::kBad),
-                         "%s", e.failure.what.c_str());
+  const char* word = panels.empty() ? "frame" : frameWord(*panels.front());
+  ImGui::BeginChild("failure rows");
+  const float wrap = ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x;
+  const bool wrapped = list.entries.size() <= 2000;
+  const float line = ImGui::GetTextLineHeight();
+  const auto row = [&](int r) {
+    const FailureList::Entry& e = list.entries[static_cast<std::size_t>(r)];
+    const Source& s = *panels[std::min(e.panel, panels.size() - 1)];
+    const std::string item = e.failure.item.valid() ? s.describe(e.failure.item) : "-";
+    char head[192];
+    if (e.failure.call) {
+      std::snprintf(head, sizeof head, "%s %" PRIu64 " call %u   %s", word, e.failure.frame,
+                    *e.failure.call, item.c_str());
+    } else {
+      std::snprintf(head, sizeof head, "%s %" PRIu64 "   %s", word, e.failure.frame, item.c_str());
+    }
+    const std::string who = several ? "   " + s.moverName() : std::string();
+    const float whatH = wrapped ? ImGui::CalcTextSize(e.failure.what.c_str(), nullptr, false, wrap).y
+                                : line;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::PushID(r);
+    if (ImGui::Selectable("##failure", false, 0, {0.0f, line + whatH + 2.0f}))
+      a.failure = static_cast<std::size_t>(r);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s%s: %s", head, who.c_str(), e.failure.what.c_str());
+    ImGui::PopID();
+    ImDrawList& dl = *ImGui::GetWindowDrawList();
+    dl.AddText(at, pal::kLabel, head);
+    if (several) {
+      dl.AddText({at.x + ImGui::CalcTextSize(head).x, at.y}, pal::kDim, who.c_str());
+    }
+    const ImU32 c = e.failure.kind == FailureKind::busy ? pal::kRender : pal::kBad;
+    if (wrapped) {
+      dl.AddText(ImGui::GetFont(), ImGui::GetFontSize(), {at.x + 12.0f, at.y + line + 1.0f}, c,
+                 e.failure.what.c_str(), nullptr, wrap - 12.0f);
+    } else {
+      ImGui::PushClipRect(at, {at.x + wrap, at.y + 2.0f * line + 2.0f}, true);
+      dl.AddText({at.x + 12.0f, at.y + line + 1.0f}, c, e.failure.what.c_str());
+      ImGui::PopClipRect();
+    }
+  };
+  if (wrapped) {
+    for (int r = 0; r < static_cast<int>(list.entries.size()); ++r) row(r);
+  } else {
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(list.entries.size()),
+                  2.0f * line + 2.0f + ImGui::GetStyle().ItemSpacing.y);
+    while (clipper.Step()) {
+      for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) row(r);
     }
   }
-  ImGui::EndTable();
+  ImGui::EndChild();
 }
 
 }  // namespace tv::ui

@@ -177,8 +177,11 @@ std::optional<ItemId> worldView(const char* id, Source& source, DebuggerState& s
   if (ImGui::IsItemHovered() && !ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
     if (const auto under = source.itemAt(st.camera.toWorld(io.MousePos))) {
       const std::string cat = source.category(*under);
-      ImGui::SetTooltip("%s%s%s  (click to trace)", source.describe(*under).c_str(),
-                        cat.empty() ? "" : ", ", cat.c_str());
+      // "bullet 4 (bullet): click to trace"; the category only where it says more than the name.
+      const std::string name = source.describe(*under);
+      const bool says = !cat.empty() && name.rfind(cat, 0) != 0;
+      ImGui::SetTooltip("%s%s%s%s: click to trace", name.c_str(), says ? " (" : "",
+                        says ? cat.c_str() : "", says ? ")" : "");
     }
   }
   const WorldPicture pic = source.picture();
@@ -563,6 +566,8 @@ void drawColumn(Session& s, ViewState& v, const Column& c, Actions& a) {
     ImGui::End();
   }
   place({c.x, c.y + y}, {c.w, std::max(c.h - y, 60.0f)});
+  v.tabsPos = {c.x, c.y + y};
+  v.tabsSize = {c.w, std::max(c.h - y, 60.0f)};
   if (ImGui::Begin("Details", nullptr, kFixed | ImGuiWindowFlags_NoTitleBar)) {
     if (ImGui::BeginTabBar("details")) {
       const auto flag = [&](Tab t) {

@@ -66,6 +66,7 @@ Said whatHappened(const MoveTrace& m, const Source& s, const Failure* failed) {
   }
   const Vec2 move = m.goal - m.start.position();
   std::string did;
+  std::string first;  // the first thing it did, alone: the brief form
   if (m.hits.empty()) {
     if (!failed) did = m.final == m.goal ? "moved freely: nothing in the way" : "moved: no hit";
   } else {
@@ -124,6 +125,7 @@ Said whatHappened(const MoveTrace& m, const Source& s, const Failure* failed) {
         break;
       }
       did += (did.empty() ? "" : ", then ") + phrase;
+      if (first.empty()) first = phrase;
       last = phrase;
       ++told;
     }
@@ -135,7 +137,7 @@ Said whatHappened(const MoveTrace& m, const Source& s, const Failure* failed) {
   }
   if (said.text.empty()) {
     said.text = did;
-    said.brief = did.substr(0, did.find(", "));
+    said.brief = first.empty() ? did : first;
   } else {
     said.brief = said.text;
     if (!did.empty()) said.text += " (" + did + ")";

@@ -27,6 +27,9 @@ struct ViewState {
   bool revealCall = false;            ///< scroll the calls to the selected one once
   std::string caption;                ///< a line under a comparison's title (a still's)
   FailureList failures;               ///< filled by the debugger
+  /// Where the column's tabs were drawn in the last frame (screen px): a window that must not
+  /// hide the world or the controls (Help on the first run) goes over them.
+  ImVec2 tabsPos{0, 0}, tabsSize{0, 0};
 };
 
 /// One DebuggerState per panel of `session`; new ones take panel 0's overlays and framing.
