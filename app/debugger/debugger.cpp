@@ -12,6 +12,10 @@
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
 #include "tv/ui/still.hpp"
+#if TV_HAVE_LIVE
+#include "tv/record/live.hpp"
+#include "tv/ui/live_source.hpp"
+#endif
 
 namespace tv::viewer {
 
@@ -93,6 +97,12 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
   first.renderHz = std::clamp(o.renderHz, 0.0, 1000.0);
   view_.panels.assign(1, first);
 
+  if (options.listen) {
+    // A live game: what arrives, as it arrives.
+    listen(*options.listen);
+    view_.showTab = options.tab;
+    return;
+  }
   if (options.recording) {
     // A recording: the frame, call and item the flags name; a what-if run beside it.
     const ui::RecordingFlags& r = *options.recording;
@@ -385,6 +395,95 @@ void Debugger::setMovers(std::vector<MoverSpec> movers) {
   }
 }
 
+// -- a live game ---------------------------------------------------------------------------------
+
+#if TV_HAVE_LIVE
+ui::LiveSource* Debugger::liveSource() {
+  return session_ ? dynamic_cast<ui::LiveSource*>(&session_->primary()) : nullptr;
+}
+const ui::LiveSource* Debugger::liveSource() const {
+  return session_ ? dynamic_cast<const ui::LiveSource*>(&session_->primary()) : nullptr;
+}
+#endif
+
+bool Debugger::live() const {
+#if TV_HAVE_LIVE
+  return liveSource() != nullptr;
+#else
+  return false;
+#endif
+}
+
+void Debugger::listen(const std::string& address) {
+#if TV_HAVE_LIVE
+  LiveReceiverOptions o;
+  o.address = address;
+  // Throws naming the address when it is malformed or in use: nothing has changed then.
+  auto rx = std::make_shared<LiveReceiver>(o);
+  listenAddress_ = rx->address();
+  receiver_ = rx;
+  scene_ = nullptr;
+  follow_ = true;
+  paused_ = false;  // following the newest frame
+  view_.panels[0].overlays.positions = false;
+  adopt(std::make_unique<ui::Session>(std::make_unique<ui::LiveSource>(rx)), false);
+  message_.clear();
+  notice_ = "listening on " + listenAddress_;
+#else
+  (void)address;
+  fail("tv-debugger", "this build has no live streams (tv/record/live.hpp)");
+#endif
+}
+
+void Debugger::tryListen(const std::string& address) {
+  try {
+    listen(address);
+  } catch (const std::exception& e) {
+    reportError(app::userMessage(e));
+  }
+}
+
+bool Debugger::saveStream(const std::string& path) {
+#if TV_HAVE_LIVE
+  try {
+    const ui::LiveSource* l = liveSource();
+    if (!l) fail("tv-debugger", "no live game to save");
+    l->save(path);
+    notice_ = "saved the frames kept (" + std::to_string(l->firstFrame()) + ".." +
+              std::to_string(l->lastFrame()) + ") to " + path;
+    message_.clear();
+    return true;
+  } catch (const std::exception& e) {
+    reportError("save: " + app::userMessage(e));
+    return false;
+  }
+#else
+  (void)path;
+  return false;
+#endif
+}
+
+void Debugger::refreshLive() {
+#if TV_HAVE_LIVE
+  ui::LiveSource* l = liveSource();
+  if (!l) return;
+  const std::uint64_t run = l->run();
+  for (const std::string& news : l->refresh(!paused_ || jumpToNewest_)) notice_ = news;
+  if (l->run() != run) {
+    // A new run: a game connected (again). Its world is a new one: frame it, trace its busiest.
+    checks_.reset(*session_, false);
+    traceBusiest();
+    frameAll();
+    follow_ = true;
+  }
+  if ((!paused_ || jumpToNewest_) && l->lastFrame() != currentTick()) {
+    session_->goTo(l->lastFrame());
+    jumpToNewest_ = jumpToNewest_ && currentTick() < l->lastFrame();
+  }
+  if (!paused_ && l->ended() && currentTick() >= l->lastFrame()) paused_ = true;
+#endif
+}
+
 // -- time ----------------------------------------------------------------------------------------
 
 void Debugger::goTo(std::uint64_t f, bool stopAtEnd) {
@@ -399,7 +498,7 @@ void Debugger::goTo(std::uint64_t f, bool stopAtEnd) {
 }
 
 void Debugger::advance(double seconds) {
-  if (paused_) return;
+  if (paused_ || live()) return;  // a live game goes at its own pace (refreshLive)
   clock_ += seconds * speed_;
   const double step = session_->playSeconds();
   int n = 0;
@@ -655,6 +754,21 @@ void Debugger::run(Command c) {
   switch (c) {
     case Command::pause: {
       notice_.clear();
+#if TV_HAVE_LIVE
+      if (ui::LiveSource* l = liveSource()) {
+        // Pause holds the game at its next frame, where it allows it; either way the view
+        // stops following. Play lets it go on and follows the newest frame again.
+        if (paused_) {
+          if (l->controllable()) l->receiver().resume();
+          paused_ = false;
+        } else {
+          if (l->controllable()) l->receiver().pause();
+          paused_ = true;
+          checks_.reset(*session_, pinned_);  // what is kept now, checked
+        }
+        break;
+      }
+#endif
       // Play at the end plays it again, and says so, rather than pausing at once.
       if (paused_ && session_->ended() && session_->frame() >= session_->lastFrame()) {
         const std::uint64_t end = currentTick();
@@ -670,6 +784,18 @@ void Debugger::run(Command c) {
     case Command::step:
       paused_ = true;
       notice_.clear();
+#if TV_HAVE_LIVE
+      if (ui::LiveSource* l = liveSource()) {
+        // One more frame of the game, then held again; shown when it arrives.
+        if (l->controllable()) {
+          l->receiver().step();
+          jumpToNewest_ = true;
+        } else {
+          goTo(currentTick() + 1);
+        }
+        break;
+      }
+#endif
       if (isScene()) {
         // One tick forward, kept in the history as it runs.
         for (std::size_t k = 0; k < session_->size(); ++k) session_->panel(k).sim()->tick();

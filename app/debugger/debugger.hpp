@@ -28,6 +28,15 @@
 #include "tv/ui/session.hpp"
 #include "tv/ui/view.hpp"
 
+#if TV_HAVE_LIVE
+namespace tv {
+class LiveReceiver;
+}
+namespace tv::ui {
+class LiveSource;
+}
+#endif
+
 namespace tv::viewer {
 
 /// The File > Open recording... dialog: a path to type, and the .tvrec files of the folder it
@@ -87,6 +96,17 @@ class Debugger {
   void goToFailure(std::size_t index);
   /// What "go" beside "runs differ" does: that frame, the item that differs traced and followed.
   void goToDifference();
+  /// Waits for games streaming live at `address` ([HOST:]PORT) in place of what is open; tv::Error
+  /// for an address that is malformed or taken (nothing changes). `tryListen` shows it instead.
+  void listen(const std::string& address);
+  void tryListen(const std::string& address);
+  /// A live game is shown.
+  [[nodiscard]] bool live() const;
+  /// The view goes to each newest frame as it arrives (a live game, until paused or scrubbed).
+  [[nodiscard]] bool followingLive() const { return live() && !paused_; }
+  /// Writes a live game's kept frames to `path` (File > Save the stream); false with the reason
+  /// in message() when it cannot.
+  bool saveStream(const std::string& path);
   /// Shows frame `f`, call `k` of it, tracing the item labelled `item` (a recording's
   /// --frame/--call/--item); UsageError naming the flag when it has no such thing.
   void show(std::uint64_t f, std::optional<std::uint32_t> k, const std::optional<std::string>& item);
@@ -133,6 +153,12 @@ class Debugger {
   void frameAll();
   void traceBusiest();
   void reportError(const std::string& what);
+  /// A live game: what arrived, and the newest frame while following.
+  void refreshLive();
+#if TV_HAVE_LIVE
+  [[nodiscard]] ui::LiveSource* liveSource();
+  [[nodiscard]] const ui::LiveSource* liveSource() const;
+#endif
 
   // -- windows (debugger_ui.cpp) -------------------------------------------------------------
   void handleKeys(std::span<const KeyPress> keys);
@@ -141,6 +167,7 @@ class Debugger {
   void drawPicker();
   void drawSweep();
   void drawWhatIfDialog();
+  void drawLiveDialogs();
   void syncCameras();
   /// The mover the substep sweep varies: the first substep mover compared, else the first.
   [[nodiscard]] MoverSpec sweptMover() const;
@@ -179,6 +206,15 @@ class Debugger {
   std::string notice_;   // news that is not an error ("the scene had ended"), until the next
   OpenRecordingDialog recordingDialog_;
   SubstepSweep sweep_;
+  // A live game: the receiver (shared with its source), where to listen and save.
+#if TV_HAVE_LIVE
+  std::shared_ptr<LiveReceiver> receiver_;
+#endif
+  bool openListen_ = false, openSave_ = false;
+  bool jumpToNewest_ = false;  // a step was asked: show its frame when it comes
+  double liveChecksAt_ = 0.0;  // seconds of following since the checks last looked
+  std::string listenAddress_ = "127.0.0.1:7720";
+  std::string savePath_ = "live.tvrec";
   // The what-if dialog's draft.
   MoverSpec draftWhatIf_{.kind = MoverKind::discrete};
   double draftSubstep_ = 0.0;  // 0: half the smallest item

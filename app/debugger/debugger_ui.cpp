@@ -24,6 +24,10 @@
 #include "tv/ui/palette.hpp"
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
+#if TV_HAVE_LIVE
+#include "tv/record/live.hpp"
+#include "tv/ui/live_source.hpp"
+#endif
 
 namespace tv::viewer {
 
@@ -61,6 +65,7 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
     applyActions(later);
   }
   handleKeys(keys);
+  refreshLive();
   advance(seconds);
   // Look ahead for where the run fails, a few milliseconds a frame; screenshots ran it to the
   // end already (setPinned).
@@ -108,6 +113,7 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   }
   if (showSweep_ && scene_) drawSweep();
   if (showWhatIf_) drawWhatIfDialog();
+  drawLiveDialogs();
   drawPicker();
   if (const auto path = recordingDialog_.draw()) tryOpenRecording(*path);
 }
@@ -257,6 +263,8 @@ float Debugger::drawMenuBar() {
     item("Open scene or level...", Command::openScene);
     if (ImGui::MenuItem("Open level file (map, scene file)...")) openPicker_ = focusPath_ = true;
     item("Open recording...", Command::openRecording);
+    if (ImGui::MenuItem("Listen for a game...")) openListen_ = true;
+    if (ImGui::MenuItem("Save the stream...", nullptr, false, live())) openSave_ = true;
     if (!scene && ImGui::MenuItem("Validate again")) checks_.reset(*session_, pinned_);
     item(scene ? "Restart" : "First frame", Command::restart);
     ImGui::Separator();
@@ -436,7 +444,21 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   };
   const bool scene = isScene();
   button("Back", Command::stepBack);
+#if TV_HAVE_LIVE
+  if (const ui::LiveSource* l = liveSource()) {
+    // A game that allows it is held and stepped from here; any game is followed or not.
+    if (l->controllable()) {
+      button(paused_ ? "Resume game" : "Pause game", Command::pause);
+      button("Step game", Command::step);
+    } else {
+      button(paused_ ? "Follow" : "Stop following", Command::pause);
+    }
+  } else {
+    button(paused_ ? "Play" : "Pause", Command::pause);
+  }
+#else
   button(paused_ ? "Play" : "Pause", Command::pause);
+#endif
   button("Forward", Command::stepForward);
   // Calls only where a frame has them to step through.
   if (!session_->calls().empty() || !scene) {
@@ -515,6 +537,24 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   if (!message_.empty()) {
     (void)note(pal::kBad, message_, "refused: hover, or see the panel", message_, false);
   } else {
+#if TV_HAVE_LIVE
+    if (const ui::LiveSource* l = liveSource()) {
+      std::string state;
+      if (l->run() == 0) {
+        state = "live: waiting for a game at " + listenAddress_;
+      } else if (l->ended()) {
+        state = "live: the game left (run " + std::to_string(l->run()) + ")";
+      } else {
+        state = std::string("live: ") + (paused_ ? (l->controllable() ? "game held" : "not following")
+                                                  : "following the newest frame");
+      }
+      (void)note(l->ended() || l->run() == 0 ? pal::kDim : pal::kGood, state, "live", state, false);
+      if (l->dropped() > 0) {
+        const std::string d = "dropped the oldest " + std::to_string(l->dropped()) + " frames";
+        (void)note(pal::kRender, d, "dropped: hover", l->notes().back(), false);
+      }
+    }
+#endif
     if (!notice_.empty()) (void)note(pal::kRender, notice_, "note: hover", notice_, false);
     if (marks.failure) {
       const std::string full = std::string("first failure: ") + unit + " " +
@@ -727,6 +767,44 @@ void Debugger::drawWhatIfDialog() {
     if (!checks_.error().empty()) ImGui::TextColored(colour(pal::kBad), "%s", checks_.error().c_str());
   }
   ImGui::End();
+}
+
+void Debugger::drawLiveDialogs() {
+  // Two small popups: where to listen, and where to save what a live game sent.
+  const auto pathPopup = [&](const char* title, bool& opening, std::string& text, const char* hint,
+                             const char* help, const char* action) -> bool {
+    if (opening) {
+      ImGui::OpenPopup(title);
+      opening = false;
+    }
+    ImGui::SetNextWindowSize({460, 0}, ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return false;
+    ImGui::TextWrapped("%s", help);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
+    ImGui::SetNextItemWidth(-90.0f);
+    const bool enter = ImGui::InputTextWithHint("##text", hint, buffer, sizeof buffer,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    text = buffer;
+    ImGui::SameLine();
+    const bool go = (ImGui::Button(action) || enter) && !text.empty();
+    if (go || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return go;
+  };
+  if (pathPopup("Listen for a game", openListen_, listenAddress_, "127.0.0.1:7720",
+                "Where the debugger waits for a game streaming live: [HOST:]PORT (127.0.0.1 "
+                "unless a host is given). Run the game with --live and this address (a LOVE game: "
+                "TV_LIVE=address).",
+                "Listen"))
+    tryListen(listenAddress_);
+  if (pathPopup("Save the stream", openSave_, savePath_, "live.tvrec",
+                "The frames kept of the live game, written as a recording (.tvrec) that tv-replay "
+                "validates and the debugger opens.",
+                "Save"))
+    (void)saveStream(savePath_);
 }
 
 std::optional<std::string> OpenRecordingDialog::draw() {

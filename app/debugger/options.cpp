@@ -18,6 +18,7 @@ const char* const kUsage =
     "       tv-debugger GAME.tvrec [--frame N] [--call K] [--item LABEL] [--window WxH]\n"
     "                   [--what-if MOVER [--updates-as-moves]]\n"
     "                   [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b] [...as above]\n"
+    "       tv-debugger --listen [HOST:]PORT [--view ...] [--hide ...]\n"
     "       tv-debugger --list\n"
     "\n"
     "The interactive debugger: a window (GLFW, OpenGL 3.3) showing a scene, a level or a\n"
@@ -60,6 +61,13 @@ const char* const kUsage =
     "labelled LABEL traced; --screenshot then writes tv-render --open's picture of it.\n"
     "  --what-if MOVER  re-run the recording with MOVER beside the recorded run (Movers menu)\n"
     "  --updates-as-moves  in that run, an update that only moves an item is made a move\n"
+    "A game running now (its recorder streaming with --live HOST:PORT, or a LOVE game with\n"
+    "TV_LIVE=HOST:PORT; or File > Listen for a game...):\n"
+    "  --listen ADDR    wait for games at [HOST:]PORT (host 127.0.0.1 unless given); frames\n"
+    "                   show as they arrive and the view follows the newest until you pause or\n"
+    "                   scrub; Pause and Step hold the game at its next frame (when it allows\n"
+    "                   it); the oldest frames are dropped past 256 MB; File > Save the stream\n"
+    "                   writes what is kept as a .tvrec\n"
     "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
     "values) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
@@ -108,6 +116,8 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
       o.sweep = true;
     } else if (arg == "--overlay") {
       o.overlay = true;
+    } else if (arg == "--listen") {
+      o.listen = value(i, arg);
     } else if (arg == "--first-failure") {
       o.firstFailure = true;
     } else if (arg == "--tab") {
@@ -139,6 +149,14 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
     throw ui::UsageError{"--ticks: tv-debugger opens at one tick; give --tick N"};
   }
   if (o.recording) ui::rejectSceneFlags(o.picture);
+  if (o.listen && o.recording) {
+    throw ui::UsageError{"--listen: a live game or a recording, not both (File > Open recording... "
+                         "opens one later)"};
+  }
+  if (o.listen && (o.screenshot || o.appScreenshot)) {
+    throw ui::UsageError{"--listen: a live game cannot be a screenshot (tv-replay --listen saves "
+                         "it; open the file)"};
+  }
   if (o.screenshot && o.appScreenshot) {
     throw ui::UsageError{"--screenshot: give either --screenshot or --app-screenshot"};
   }

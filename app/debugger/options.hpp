@@ -32,6 +32,8 @@ struct ViewerOptions {
   bool firstFailure = false;
   /// The column's tab to show first.
   std::optional<ui::Tab> tab;
+  /// --listen [HOST:]PORT: wait for games streaming live (their recorder's --live).
+  std::optional<std::string> listen;
 };
 
 /// Throws ui::UsageError naming the flag.
