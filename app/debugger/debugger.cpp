@@ -99,7 +99,7 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
 
   if (options.listen) {
     // A live game: what arrives, as it arrives.
-    listen(*options.listen);
+    listen(*options.listen, options.keepFrames, options.keepMegabytes);
     view_.showTab = options.tab;
     return;
   }
@@ -414,10 +414,13 @@ bool Debugger::live() const {
 #endif
 }
 
-void Debugger::listen(const std::string& address) {
+void Debugger::listen(const std::string& address, std::uint64_t keepFrames,
+                      std::uint64_t keepMegabytes) {
 #if TV_HAVE_LIVE
   LiveReceiverOptions o;
   o.address = address;
+  o.keepFrames = keepFrames;
+  o.keepBytes = keepMegabytes << 20;
   // Throws naming the address when it is malformed or in use: nothing has changed then.
   auto rx = std::make_shared<LiveReceiver>(o);
   listenAddress_ = rx->address();
@@ -431,6 +434,8 @@ void Debugger::listen(const std::string& address) {
   notice_ = "listening on " + listenAddress_;
 #else
   (void)address;
+  (void)keepFrames;
+  (void)keepMegabytes;
   fail("tv-debugger", "this build has no live streams (tv/record/live.hpp)");
 #endif
 }

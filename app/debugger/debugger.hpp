@@ -98,7 +98,8 @@ class Debugger {
   void goToDifference();
   /// Waits for games streaming live at `address` ([HOST:]PORT) in place of what is open; tv::Error
   /// for an address that is malformed or taken (nothing changes). `tryListen` shows it instead.
-  void listen(const std::string& address);
+  void listen(const std::string& address, std::uint64_t keepFrames = 0,
+              std::uint64_t keepMegabytes = 256);
   void tryListen(const std::string& address);
   /// A live game is shown.
   [[nodiscard]] bool live() const;

@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include "tv/app/flags.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -66,8 +68,10 @@ const char* const kUsage =
     "  --listen ADDR    wait for games at [HOST:]PORT (host 127.0.0.1 unless given); frames\n"
     "                   show as they arrive and the view follows the newest until you pause or\n"
     "                   scrub; Pause and Step hold the game at its next frame (when it allows\n"
-    "                   it); the oldest frames are dropped past 256 MB; File > Save the stream\n"
-    "                   writes what is kept as a .tvrec\n"
+    "                   it); File > Save the stream writes what is kept as a .tvrec\n"
+    "  --keep-frames N  keep the newest N frames of a live game (default: no limit by count)\n"
+    "  --keep-mb M      keep at most M MB of them (default 256); the oldest are dropped, and\n"
+    "                   the window says so\n"
     "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
     "values) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
@@ -118,6 +122,14 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
       o.overlay = true;
     } else if (arg == "--listen") {
       o.listen = value(i, arg);
+    } else if (arg == "--keep-frames") {
+      o.keepFrames = app::parseWhole<ui::UsageError>("keep-frames", value(i, arg));
+    } else if (arg == "--keep-mb") {
+      o.keepMegabytes = app::parseWhole<ui::UsageError>("keep-mb", value(i, arg));
+      if (o.keepMegabytes < 1 || o.keepMegabytes > (std::uint64_t{1} << 20)) {
+        throw ui::UsageError{"--keep-mb: expected 1..1048576 (MB), but got " +
+                             std::to_string(o.keepMegabytes)};
+      }
     } else if (arg == "--first-failure") {
       o.firstFailure = true;
     } else if (arg == "--tab") {
@@ -149,6 +161,9 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
     throw ui::UsageError{"--ticks: tv-debugger opens at one tick; give --tick N"};
   }
   if (o.recording) ui::rejectSceneFlags(o.picture);
+  if (!o.listen && (o.keepFrames != 0 || o.keepMegabytes != 256)) {
+    throw ui::UsageError{"--keep-frames and --keep-mb go with --listen"};
+  }
   if (o.listen && o.recording) {
     throw ui::UsageError{"--listen: a live game or a recording, not both (File > Open recording... "
                          "opens one later)"};

@@ -3,6 +3,7 @@
 // movers, tick, size, body, view, render rate, overlays and scene parameters), plus the
 // debugger's own.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -34,6 +35,9 @@ struct ViewerOptions {
   std::optional<ui::Tab> tab;
   /// --listen [HOST:]PORT: wait for games streaming live (their recorder's --live).
   std::optional<std::string> listen;
+  /// --keep-frames N / --keep-mb M: the frames of a live game kept (0 frames: no limit by count).
+  std::uint64_t keepFrames = 0;
+  std::uint64_t keepMegabytes = 256;
 };
 
 /// Throws ui::UsageError naming the flag.
