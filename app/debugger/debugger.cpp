@@ -154,7 +154,7 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
     }
   }
   view_.showTab = options.tab;
-  if (options.firstFailure) {
+  if (o.firstFailure) {
     // Looked for now, before the window opens: the first frame shown is the failure.
     checks_.reset(*session_, true);
     checks_.advance(1e12);
@@ -556,27 +556,18 @@ void Debugger::selectCall(std::optional<std::uint32_t> k) {
 }
 
 void Debugger::goToFailure(std::size_t index) {
-  const auto& entries = checks_.failures().entries;
-  if (index >= entries.size()) return;
-  const ui::FailureList::Entry e = entries[index];
+  view_.failures = checks_.failures();
+  if (index >= view_.failures.entries.size()) return;
   paused_ = true;
-  goTo(e.failure.frame);
-  if (e.failure.item.valid()) select(e.failure.item);
-  // A recording's call is the failing one; a scene's, that body's move in the tick.
-  if (e.failure.call && !isScene()) {
-    selectCall(e.failure.call);
-  } else if (e.failure.item.valid()) {
-    const auto calls = session_->calls();
-    for (std::uint32_t k = 0; k < calls.size(); ++k) {
-      if (calls[k].item == e.failure.item) selectCall(k);
-    }
+  notice_.clear();
+  try {
+    ui::goToFailure(*session_, view_, index);
+  } catch (const std::exception& e) {
+    reportError(app::userMessage(e));
   }
-  view_.inspected = std::min(e.panel, session_->size() - 1);
-  view_.showTab = ui::Tab::inspector;
-  // Centred and zoomed on the failing move, and followed from there.
+  clock_ = 0.0;
+  // Followed from there.
   follow_ = true;
-  const Rect r = session_->followView();
-  for (auto& st : view_.panels) st.frameView = r;
 }
 
 void Debugger::goToDifference() {
@@ -879,16 +870,10 @@ void Debugger::run(Command c) {
     case Command::failures:
       view_.showTab = ui::Tab::failures;
       break;
-    case Command::firstFailure: {
-      // The earliest, whichever panel it is in (the list is by panel).
-      const auto& entries = checks_.failures().entries;
-      std::optional<std::size_t> first;
-      for (std::size_t i = 0; i < entries.size(); ++i) {
-        if (!first || entries[i].failure.frame < entries[*first].failure.frame) first = i;
-      }
-      if (first) goToFailure(*first);
+    case Command::firstFailure:
+      // The earliest, whichever panel it is in.
+      if (const auto first = ui::firstFailureIndex(checks_.failures())) goToFailure(*first);
       break;
-    }
     case Command::openScene:
       openPicker_ = true;
       break;

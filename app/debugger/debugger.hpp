@@ -2,7 +2,7 @@
 // The debugger: one session over any source — a built-in scene, a level file, a recording, a
 // game streaming live — one panel or several in lockstep (movers compared, what-if runs), the
 // time controls over them, and everything drawn around the view: the menu bar, the timeline,
-// the pickers, Help and the substep sweep. Checks beside the view (checks.hpp) find where the
+// the pickers, Help and the substep sweep. Checks beside the view (tv/ui/checks.hpp) find where the
 // run fails; "go" and the Failures tab take the person straight there.
 //
 // [debugger.cpp]     model: opening sources, time, selection, tuning, commands
@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "checks.hpp"
 #include "gl_window.hpp"
 #include "options.hpp"
 #include "settings.hpp"
@@ -25,6 +24,7 @@
 #include "tv/mover.hpp"
 #include "tv/sim/params.hpp"
 #include "tv/sim/scene.hpp"
+#include "tv/ui/checks.hpp"
 #include "tv/ui/session.hpp"
 #include "tv/ui/view.hpp"
 
@@ -119,7 +119,7 @@ class Debugger {
   [[nodiscard]] const ui::Session& session() const { return *session_; }
   /// Each panel's mover (a recording's first panel: as recorded, `recorded` false).
   [[nodiscard]] std::vector<MoverSpec> movers() const;
-  [[nodiscard]] const Checks& checks() const { return checks_; }
+  [[nodiscard]] const ui::Checks& checks() const { return checks_; }
   [[nodiscard]] std::uint64_t currentTick() const { return session_->frame(); }
   [[nodiscard]] bool paused() const { return paused_; }
   [[nodiscard]] bool following() const { return follow_; }
@@ -175,7 +175,7 @@ class Debugger {
 
   std::unique_ptr<ui::Session> session_;
   ui::ViewState view_;
-  Checks checks_;
+  ui::Checks checks_;
 
   // A scene or level: what it was built from (files keep their scenes alive: the background
   // checks may still point at an earlier one).

@@ -405,7 +405,7 @@ std::vector<std::string> Debugger::status() const {
     out.push_back(std::string(session_->whatIf() ? "runs differ from frame " : "movers differ from tick ") +
                   std::to_string(*d));
   }
-  if (const ValidationJob* v = checks_.validation()) {
+  if (const ui::ValidationJob* v = checks_.validation()) {
     if (v->running()) {
       out.push_back("validating: frame " + std::to_string(v->progress()));
     } else if (!v->error().empty()) {
@@ -576,7 +576,7 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
         ImGui::SameLine();
       }
     }
-    if (const ValidationJob* v = checks_.validation()) {
+    if (const ui::ValidationJob* v = checks_.validation()) {
       if (v->running()) {
         char text[96];
         std::snprintf(text, sizeof text, "validating: frame %" PRIu64, v->progress());

@@ -195,6 +195,9 @@ int main(int argc, char** argv) {
   } catch (const tv::ui::UsageError& e) {
     std::cerr << "tv-debugger: " << e.message << "\n(see tv-debugger --help)\n";
     return tv::viewer::kUsageExit;
+  } catch (const tv::ui::NoFailure& e) {
+    std::cerr << "tv-debugger: " << e.message << ": nothing to show, no image written\n";
+    return 0;
   } catch (const std::exception& e) {
     std::cerr << "tv-debugger: " << tv::app::userMessage(e) << "\n";
     return tv::viewer::kFailureExit;

@@ -18,7 +18,7 @@ const char* const kUsage =
     "                   [--no-settings]\n"
     "                   [--frames K --screenshot FILE.png | --app-screenshot FILE.png]\n"
     "       tv-debugger GAME.tvrec [--frame N] [--call K] [--item LABEL] [--window WxH]\n"
-    "                   [--what-if MOVER [--updates-as-moves]]\n"
+    "                   [--what-if MOVER [--updates-as-moves]] [--first-failure]\n"
     "                   [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b] [...as above]\n"
     "       tv-debugger --listen [HOST:]PORT [--view ...] [--hide ...]\n"
     "       tv-debugger --list\n"
@@ -47,7 +47,8 @@ const char* const kUsage =
     "                   --angle ... (as in tv-run, tv-render and the panel)\n"
     "  --overlay        compared movers in one view (default: side by side)\n"
     "  --first-failure  open at the run's first failure: its frame, the failing item traced,\n"
-    "                   centred and zoomed (what the timeline's \"go\" does)\n"
+    "                   centred and zoomed (what the timeline's \"go\" does); for a what-if\n"
+    "                   run, the first re-run move that tunnelled or ended inside a solid\n"
     "  --tab T          the column's tab shown first: inspector, calls, items, failures,\n"
     "                   counters\n"
     "  --sweep          open the substep sweep plot\n"
@@ -130,8 +131,6 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
         throw ui::UsageError{"--keep-mb: expected 1..1048576 (MB), but got " +
                              std::to_string(o.keepMegabytes)};
       }
-    } else if (arg == "--first-failure") {
-      o.firstFailure = true;
     } else if (arg == "--tab") {
       const std::string t = value(i, arg);
       if (t == "inspector") {
@@ -161,6 +160,7 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
     throw ui::UsageError{"--ticks: tv-debugger opens at one tick; give --tick N"};
   }
   if (o.recording) ui::rejectSceneFlags(o.picture);
+  ui::checkFirstFailure(o.picture, o.recording);
   if (!o.listen && (o.keepFrames != 0 || o.keepMegabytes != 256)) {
     throw ui::UsageError{"--keep-frames and --keep-mb go with --listen"};
   }

@@ -29,8 +29,6 @@ struct ViewerOptions {
   bool sweep = false;
   /// Draw compared movers in one view instead of side by side.
   bool overlay = false;
-  /// Open at the run's first failure (traced, centred, zoomed), once the checks have found it.
-  bool firstFailure = false;
   /// The column's tab to show first.
   std::optional<ui::Tab> tab;
   /// --listen [HOST:]PORT: wait for games streaming live (their recorder's --live).

@@ -129,8 +129,9 @@ int renderRecording(const ui::RecordingFlags& r, const Options& o) {
     const std::string name = still.session().primary().name();
     path = name.substr(0, name.rfind('.')) + "_{tick}.png";
   }
+  // The frame shown: --frame, or with --first-failure the frame it found.
   for (std::size_t at; (at = path.find("{tick}")) != std::string::npos;)
-    path.replace(at, 6, std::to_string(r.frame));
+    path.replace(at, 6, std::to_string(still.session().frame()));
   writePng(path, o.width, o.height, gl.readRgb());
   const double pngMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - e0).count();
@@ -158,7 +159,10 @@ int run(int argc, char** argv) {
   }
   ui::Still still(o);
   OffscreenGl gl(o.width, o.height);
-  for (const std::uint64_t tick : o.ticks) {
+  // --first-failure: one image, at the tick the failure is in.
+  const std::vector<std::uint64_t> ticks =
+      still.failureShown() ? std::vector<std::uint64_t>{still.session().frame()} : o.ticks;
+  for (const std::uint64_t tick : ticks) {
     still.advanceTo(tick);
     const FrameTimes t = renderImage(o, still);
     const auto e0 = std::chrono::steady_clock::now();
@@ -180,6 +184,10 @@ int main(int argc, char** argv) {
   } catch (const tv::headless::UsageError& e) {
     std::cerr << "tv-render: " << e.message << "\n(see tv-render --help)\n";
     return tv::headless::kUsageExit;
+  } catch (const tv::ui::NoFailure& e) {
+    // Nothing failed, so there is no moment to draw: said, and not an error.
+    std::cerr << "tv-render: " << e.message << ": nothing to show, no image written\n";
+    return 0;
   } catch (const std::exception& e) {
     std::cerr << "tv-render: " << tv::app::userMessage(e) << "\n";
     return tv::headless::kFailureExit;

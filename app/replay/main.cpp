@@ -2,10 +2,14 @@
 // what another mover would have done with the same calls.
 //
 //   tv-replay FILE                      summary, with a full replay and its rate
-//   tv-replay FILE --validate           exit 1 with the divergence report if it does not replay
+//   tv-replay FILE --validate [--allow-truncated]
+//                                       exit 1 with the divergence report if it does not replay,
+//                                       or if the file was cut short (a game that crashed)
 //   tv-replay FILE --stats              per item: moves, hits, max speed, moves ending in a solid
-//   tv-replay FILE --mover NAME [--substep L] [--updates-as-moves] [--far D]
-//                                       re-run the moves with another mover and compare
+//   tv-replay FILE --what-if NAME [--substep L] [--updates-as-moves] [--far D]
+//                 [--fail-on tunnel,overlap,differ]
+//                                       re-run the moves with another mover and compare; exit 1
+//                                       when the re-run does what --fail-on names (a game's CI)
 
 #include <algorithm>
 #include <chrono>
@@ -26,24 +30,59 @@ struct UsageError {
   std::string message;
 };
 
+// What a what-if run may not do, for --fail-on.
+struct FailOn {
+  bool tunnel = false, overlap = false, differ = false;
+  [[nodiscard]] bool any() const { return tunnel || overlap || differ; }
+};
+
 struct Options {
   std::string file;
   bool validate = false, stats = false, updatesAsMoves = false, tolerant = false;
+  bool allowTruncated = false;
   std::optional<std::string> mover;
   std::optional<double> substep;
   double far = 64.0;
+  FailOn failOn;
 };
 
+FailOn parseFailOn(std::string_view list) {
+  FailOn f;
+  while (true) {
+    const std::size_t comma = list.find(',');
+    const std::string_view word = list.substr(0, comma);
+    if (word == "tunnel") {
+      f.tunnel = true;
+    } else if (word == "overlap") {
+      f.overlap = true;
+    } else if (word == "differ") {
+      f.differ = true;
+    } else {
+      throw UsageError{"--fail-on: expected tunnel, overlap or differ (comma-separated), but "
+                       "got '" + std::string(word) + "'"};
+    }
+    if (comma == std::string_view::npos) break;
+    list.remove_prefix(comma + 1);
+  }
+  return f;
+}
+
 constexpr const char* kUsage =
-    "usage: tv-replay FILE [--validate | --stats | --mover NAME [--substep L] [--updates-as-moves] "
-    "[--far D]] [--tolerant]\n"
+    "usage: tv-replay FILE [--validate [--allow-truncated] | --stats |\n"
+    "                       --what-if NAME [--substep L] [--updates-as-moves] [--far D]\n"
+    "                                      [--fail-on tunnel,overlap,differ]] [--tolerant]\n"
     "  (no flag)           summary: frames, calls, moves, collisions, items, size, bytes per move, "
     "replay rate\n"
     "  --validate          replay every call and compare it with the recording; exit 1 on a "
-    "divergence\n"
+    "divergence,\n"
+    "                      and on a recording cut short (no end mark, or a frame cut: a game that "
+    "crashed)\n"
+    "  --allow-truncated   with --validate: a recording cut short passes if its whole frames "
+    "replay\n"
     "  --stats             per moving item: moves, hits, longest move, moves that ended inside a "
     "solid\n"
-    "  --mover NAME        what-if: make every recorded move with this mover instead\n"
+    "  --what-if NAME      make every recorded move with this mover instead, and compare (also "
+    "--mover)\n"
     "                      (discrete, sweep, substep-discrete, substep-sweep, continuous, pixel, "
     "adaptive)\n"
     "  --substep L         what-if: substep piece length in world units (substep-* movers)\n"
@@ -51,7 +90,12 @@ constexpr const char* kUsage =
     "bodies themselves)\n"
     "  --far D             what-if: distance from the recording beyond which its goals stop making "
     "sense (default 64)\n"
-    "  --tolerant          open what can be opened of a damaged file (a bad chunk ends it)\n";
+    "  --fail-on LIST      what-if: exit 1 if the re-run has a move that tunnelled (tunnel), ended "
+    "inside\n"
+    "                      a solid (overlap) or ended elsewhere than recorded (differ)\n"
+    "  --tolerant          open what can be opened of a damaged file (a bad chunk ends it)\n"
+    "Exit status: 0 ok, 1 a divergence, a recording cut short or a --fail-on condition, 2 bad "
+    "command line or unreadable file.\n";
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -70,9 +114,13 @@ Options parse(int argc, char** argv) {
       o.stats = true;
     } else if (a == "--tolerant") {
       o.tolerant = true;
+    } else if (a == "--allow-truncated") {
+      o.allowTruncated = true;
+    } else if (a == "--fail-on") {
+      o.failOn = parseFailOn(value());
     } else if (a == "--updates-as-moves") {
       o.updatesAsMoves = true;
-    } else if (a == "--mover") {
+    } else if (a == "--what-if" || a == "--mover") {
       o.mover = std::string(value());
     } else if (a == "--substep") {
       o.substep = tv::app::parseFinite<UsageError>("substep", value());
@@ -91,11 +139,13 @@ Options parse(int argc, char** argv) {
   }
   if (o.file.empty()) throw UsageError{"no recording given"};
   if ((o.validate + o.stats + o.mover.has_value()) > 1) {
-    throw UsageError{"--validate, --stats and --mover are separate reports: pick one"};
+    throw UsageError{"--validate, --stats and --what-if are separate reports: pick one"};
   }
   if ((o.substep || o.updatesAsMoves) && !o.mover) {
-    throw UsageError{"--substep and --updates-as-moves go with --mover"};
+    throw UsageError{"--substep and --updates-as-moves go with --what-if"};
   }
+  if (o.failOn.any() && !o.mover) throw UsageError{"--fail-on goes with --what-if MOVER"};
+  if (o.allowTruncated && !o.validate) throw UsageError{"--allow-truncated goes with --validate"};
   return o;
 }
 
@@ -141,15 +191,38 @@ int summary(tv::Replay& r) {
   return 0;
 }
 
-int validate(tv::Replay& r) {
+// How a recording was cut short, or "" when the game closed it: a file cut inside a frame, or
+// whole frames with no end mark (the game crashed or was killed between two frames).
+std::string cutShort(const tv::ReplaySummary& s) {
+  if (s.damagedAt)
+    return "the file is cut or damaged at byte " + std::to_string(*s.damagedAt) +
+           ", so the frames after " + std::to_string(s.frames - 1) + " are lost";
+  if (!s.closed) return "the file has no end mark: the game stopped without closing the recording";
+  return "";
+}
+
+int validate(tv::Replay& r, const Options& o) {
   const std::optional<tv::Divergence> d = r.validate();
   if (d) {
     std::cout << d->report();
     return 1;
   }
-  std::printf("ok: %llu frames, %llu calls replayed bit for bit%s\n",
-              static_cast<unsigned long long>(r.summary().frames),
-              static_cast<unsigned long long>(r.summary().calls), damage(r.summary()).c_str());
+  const tv::ReplaySummary& s = r.summary();
+  const std::string cut = cutShort(s);
+  if (!cut.empty() && !o.allowTruncated) {
+    // What was read replays, but a recording cut short is what a crash leaves: a CI check that
+    // passed it would hide the crash.
+    std::printf("CUT SHORT: frames 0..%llu (%llu calls) replay bit for bit, but %s\n",
+                static_cast<unsigned long long>(s.frames - 1),
+                static_cast<unsigned long long>(s.calls), cut.c_str());
+    std::cerr << "tv-replay: " << o.file << " was cut short (a game that crashed?); "
+              << "--allow-truncated accepts a recording cut short\n";
+    return 1;
+  }
+  std::printf("ok: %llu frames, %llu calls replayed bit for bit%s%s\n",
+              static_cast<unsigned long long>(s.frames),
+              static_cast<unsigned long long>(s.calls), damage(s).c_str(),
+              !s.damagedAt && !s.closed ? "; the file has no end mark (allowed)" : "");
   return 0;
 }
 
@@ -173,6 +246,38 @@ int stats(tv::Replay& r) {
   return 0;
 }
 
+// What kind of thing an item is, for the breakdowns: its category ("bullet"), else its label.
+std::string kindOf(const tv::Replay& r, tv::ItemId id) {
+  if (!id.valid()) return "?";
+  const std::string c = r.category(id);
+  return c.empty() ? r.label(id) : c;
+}
+
+// "43 bullet through wall, 5 bullet through tile": the moves behind a count, by what moved and
+// what it passed through (or ended inside), largest first.
+std::string breakdown(const tv::Replay& r, const std::vector<tv::MoveDifference>& moves,
+                      bool tunnel) {
+  std::vector<std::pair<std::string, std::uint64_t>> counts;
+  for (const tv::MoveDifference& m : moves) {
+    if (tunnel ? !m.tunnelled : !m.overlapping) continue;
+    const std::string key =
+        kindOf(r, m.item) + (tunnel ? " through " : " inside ") + kindOf(r, m.solid);
+    auto it = std::find_if(counts.begin(), counts.end(),
+                           [&](const auto& c) { return c.first == key; });
+    if (it == counts.end()) {
+      counts.emplace_back(key, 1);
+    } else {
+      ++it->second;
+    }
+  }
+  std::stable_sort(counts.begin(), counts.end(),
+                   [](const auto& a, const auto& b) { return a.second > b.second; });
+  std::string text;
+  for (const auto& [key, n] : counts)
+    text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + key;
+  return text;
+}
+
 int whatIf(tv::Replay& r, const Options& o) {
   const tv::WhatIfReport w = r.whatIf(o.far);
   const std::string name = r.options().mover->name();
@@ -189,11 +294,29 @@ int whatIf(tv::Replay& r, const Options& o) {
   std::printf("| moves that ended inside a solid | %llu | %llu |\n",
               static_cast<unsigned long long>(w.recordedOverlapping),
               static_cast<unsigned long long>(w.overlapping));
+  // The counts are of moves: say which moves, so they can be set against what the game saw.
+  const auto explain = [&](const char* run, const std::vector<tv::MoveDifference>& moves,
+                           std::uint64_t tunnelled, std::uint64_t overlapping) {
+    if (tunnelled) std::printf("%s, tunnelled: %s\n", run, breakdown(r, moves, true).c_str());
+    if (overlapping)
+      std::printf("%s, ended inside: %s\n", run, breakdown(r, moves, false).c_str());
+  };
+  std::printf("\n");
+  explain("recorded run", w.recordedFailures, w.recordedTunnelled, w.recordedOverlapping);
+  explain(name.c_str(), w.differences, w.tunnelled, w.overlapping);
+  std::printf(
+      "Counted in moves, not bodies: a body that passes two solids in two moves counts twice.\n");
+  if (o.updatesAsMoves) {
+    std::printf(
+        "With --updates-as-moves every position update is a move: a game that pushes its bodies "
+        "out itself\nfirst updates them into what they hit (a move that ended inside a solid), "
+        "then out of it.\n");
+  }
+  const auto elsewhere = static_cast<std::size_t>(
+      std::count_if(w.differences.begin(), w.differences.end(),
+                    [](const tv::MoveDifference& m) { return m.distance > 0; }));
   std::printf("\nmoves re-run: %llu; ended elsewhere: %zu",
-              static_cast<unsigned long long>(w.moves),
-              static_cast<std::size_t>(
-                  std::count_if(w.differences.begin(), w.differences.end(),
-                                [](const tv::MoveDifference& m) { return m.distance > 0; })));
+              static_cast<unsigned long long>(w.moves), elsewhere);
   if (w.failedCalls)
     std::printf("; refused by the world: %llu", static_cast<unsigned long long>(w.failedCalls));
   std::printf("\n");
@@ -224,6 +347,21 @@ int whatIf(tv::Replay& r, const Options& o) {
                 tv::formatNumber(m.distance).c_str(),
                 m.tunnelled ? "tunnelled" : (m.overlapping ? "ends inside a solid" : ""));
   }
+  if (!o.failOn.any()) return 0;
+  // A game's CI: "under discrete this recording tunnels 15 times" is a failure with its report.
+  std::string failed;
+  const auto add = [&failed](std::uint64_t n, const char* what) {
+    failed += (failed.empty() ? "" : ", ") + std::to_string(n) + (n == 1 ? " move " : " moves ") +
+              what;
+  };
+  if (o.failOn.tunnel && w.tunnelled) add(w.tunnelled, "tunnelled");
+  if (o.failOn.overlap && w.overlapping) add(w.overlapping, "ended inside a solid");
+  if (o.failOn.differ && elsewhere) add(elsewhere, "ended elsewhere");
+  if (!failed.empty()) {
+    std::printf("\nFAILED under %s: %s (--fail-on)\n", name.c_str(), failed.c_str());
+    return 1;
+  }
+  std::printf("\npassed under %s: nothing --fail-on names happened\n", name.c_str());
   return 0;
 }
 
@@ -255,7 +393,7 @@ int main(int argc, char** argv) {
     }
     tv::Replay r = tv::Replay::open(o.file, ro);
     printWarnings(r);
-    if (o.validate) return validate(r);
+    if (o.validate) return validate(r, o);
     if (o.stats) return stats(r);
     if (o.mover) return whatIf(r, o);
     return summary(r);

@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -135,11 +134,13 @@ inline std::vector<std::string> brokenLinks(const std::filesystem::path& doc) {
   std::vector<std::string> problems;
   const std::string text = detail::readAll(doc);
   // The code was removed from the prose before it was searched, so code may hold any text.
-  static const std::regex link(R"(\]\(([^()\s]+)(\s+"[^"]*")?\))");
+  // A link's target follows "](" up to the first ')' or blank (a title may follow the blank).
   for (const std::string& line : detail::proseLines(text)) {
-    for (auto it = std::sregex_iterator(line.begin(), line.end(), link);
-         it != std::sregex_iterator(); ++it) {
-      const std::string target = (*it)[1];
+    for (std::size_t at = line.find("]("); at != std::string::npos; at = line.find("](", at + 2)) {
+      const std::size_t begin = at + 2;
+      const std::size_t end = line.find_first_of(") \t(", begin);
+      if (end == std::string::npos || end == begin || line[end] == '(') continue;
+      const std::string target = line.substr(begin, end - begin);
       if (target.find("://") != std::string::npos || target.rfind("mailto:", 0) == 0) continue;
       const auto hash = target.find('#');
       const std::string file = target.substr(0, hash);

@@ -4,6 +4,8 @@
 #   -DSOURCE=     tests/package                  -DCXX=   the compiler   -DFLAGS= extra flags
 #   -DSHARED_FROM= the repository: first build it alone as shared libraries (BUILD_SHARED_LIBS)
 #                  into WORK/lib-build, and install that instead of BUILD_DIR
+#   -DEXAMPLES=   examples/: also build examples/fixed-step against the install and run it
+#   -DPROGRAMS=   the programs BUILD_DIR built (a|b|c): each must be installed, and runs there
 if(DEFINED SHARED_FROM)
   set(BUILD_DIR ${WORK}/lib-build)
 endif()
@@ -22,7 +24,7 @@ function(run)
   set(last_output "${out}" PARENT_SCOPE)
 endfunction()
 
-file(REMOVE_RECURSE ${WORK}/prefix ${WORK}/cmake-build)
+file(REMOVE_RECURSE ${WORK}/prefix ${WORK}/cmake-build ${WORK}/example-build ${WORK}/run)
 set(prefix ${WORK}/prefix)
 if(DEFINED SHARED_FROM)
   # The library alone, as a game's build would add it: no programs, no tests.
@@ -62,5 +64,66 @@ set(ENV{LD_LIBRARY_PATH} ${prefix}/lib)
 run(${WORK}/game-pkgconfig)
 if(NOT last_output MATCHES "consumer: ok")
   message(FATAL_ERROR "the pkg-config consumer printed: ${last_output}")
+endif()
+unset(ENV{LD_LIBRARY_PATH})
+
+# 3. The fixed-step example (examples/fixed-step), as a user builds it against the install.
+if(DEFINED EXAMPLES)
+  run(${CMAKE_COMMAND} -S ${EXAMPLES}/fixed-step -B ${WORK}/example-build -G Ninja
+      -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release
+      "-DCMAKE_CXX_FLAGS=${FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${FLAGS}")
+  run(${CMAKE_COMMAND} --build ${WORK}/example-build)
+  file(MAKE_DIRECTORY ${WORK}/run)
+  execute_process(COMMAND ${WORK}/example-build/fixed-step-game --frames 240
+                          --record ${WORK}/run/example.tvrec
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "bullet stopped at x = [0-9.]+, before the wall")
+    message(FATAL_ERROR "the fixed-step example (exit ${rc}): ${out}\n${err}")
+  endif()
+endif()
+
+# 4. The programs, run from the prefix in a folder far from the source tree: what a user has
+#    after `cmake --install` of a build with the programs (TV_BUILD_APP=ON).
+set(bin ${prefix}/bin)
+if(PROGRAMS)
+  string(REPLACE "|" ";" PROGRAMS "${PROGRAMS}")
+  foreach(program ${PROGRAMS})
+    if(NOT EXISTS ${bin}/${program})
+      message(FATAL_ERROR "cmake --install put no ${program} in ${bin}")
+    endif()
+  endforeach()
+endif()
+if(EXISTS ${bin}/tv-run)
+  set(share ${prefix}/share/tunnelvision)
+  execute_process(COMMAND ${bin}/tv-run --map ${share}/levels/meadow.tmj --mover continuous
+                  WORKING_DIRECTORY ${WORK}/run RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "\\| continuous \\| 600 \\| 10 \\|")
+    message(FATAL_ERROR "installed tv-run on the installed map (exit ${rc}): ${out}\n${err}")
+  endif()
+  if(EXISTS ${WORK}/run/example.tvrec)
+    execute_process(COMMAND ${bin}/tv-replay example.tvrec --validate
+                    WORKING_DIRECTORY ${WORK}/run RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                    ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "^ok: 241 frames")
+      message(FATAL_ERROR "installed tv-replay --validate (exit ${rc}): ${out}\n${err}")
+    endif()
+    if(EXISTS ${bin}/tv-render)
+      execute_process(COMMAND ${bin}/tv-render --open example.tvrec --frame 30 --out frame.png
+                      WORKING_DIRECTORY ${WORK}/run RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                      ERROR_VARIABLE err)
+      if(NOT rc EQUAL 0 OR NOT EXISTS ${WORK}/run/frame.png)
+        message(FATAL_ERROR "installed tv-render --open (exit ${rc}): ${out}\n${err}")
+      endif()
+    endif()
+  endif()
+  if(EXISTS ${bin}/tv-debugger)
+    # No display needed for its command line; a bad flag fails naming it.
+    execute_process(COMMAND ${bin}/tv-debugger --help RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "usage: tv-debugger")
+      message(FATAL_ERROR "installed tv-debugger --help (exit ${rc}): ${out}")
+    endif()
+  endif()
+  message(STATUS "the installed programs ran from ${bin}")
 endif()
 message(STATUS "installed to ${prefix}; find_package and pkg-config consumers both ran")

@@ -4,10 +4,35 @@
 #include <algorithm>
 
 #include "driver.hpp"
+#include "tv/record/replay.hpp"
 #include "tv/ui/sim_source.hpp"
+#include "tv/ui/still.hpp"
 
 namespace tv::viewer {
 namespace {
+
+// The picture tv-render (and the debugger's --screenshot) draws for these flags, as both parse
+// them.
+std::unique_ptr<ui::Still> still(const std::vector<std::string>& given) {
+  std::vector<std::string> args = {"tv-render"};
+  args.insert(args.end(), given.begin(), given.end());
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  std::vector<char*> rest;
+  const auto r = ui::extractRecordingFlags(static_cast<int>(argv.size()), argv.data(), false, rest);
+  const ui::PictureOptions o = ui::parsePictureOptions(static_cast<int>(rest.size()), rest.data());
+  return std::make_unique<ui::Still>(o, r);
+}
+
+// Draws the still's picture as tv-render does (a few frames: panels settle), for drawnText.
+void draw(ui::Still& s) {
+  s.beginImage();
+  for (int f = 0; f < 4; ++f) {
+    ImGui::NewFrame();
+    s.drawFrame(ImGui::GetIO().DisplaySize);
+    ImGui::Render();
+  }
+}
 
 // bullets-wall at 1920 px/s with the naive mover: most of the 1000 bullets pass the wall, each
 // in its own lane, in the tick it reaches it.
@@ -132,6 +157,68 @@ TEST_F(DebuggerDriver, TheInspectorAndTheWorldSayWhatHappened) {
   const std::string stopped = drawnText("World");
   EXPECT_NE(stopped.find("stopped against wall tile"), std::string::npos) << stopped;
   EXPECT_EQ(stopped.find("tunnelled"), std::string::npos) << stopped;
+}
+
+// tv-render --first-failure draws the moment "go" shows in the debugger: the same tick, the same
+// failing body traced (a bullet that tunnels there, not the body the flags would trace), the
+// inspector and the world saying what happened, the row marked in the Failures tab.
+TEST_F(DebuggerDriver, AStillAtTheFirstFailureIsWhereGoGoes) {
+  open({"--scene", "bullets-wall", "--mover", "discrete", "--first-failure"});
+  const auto shot = still({"--scene", "bullets-wall", "--mover", "discrete", "--first-failure"});
+  ASSERT_TRUE(shot->failureShown().has_value());
+  EXPECT_EQ(shot->session().frame(), dbg().currentTick());
+  EXPECT_EQ(shot->session().traced(), dbg().session().traced());
+  EXPECT_EQ(shot->failures().entries.size(), dbg().checks().failures().entries.size());
+  const ui::Failure& f = shot->failures().entries[*shot->failureShown()].failure;
+  EXPECT_EQ(f.kind, ui::FailureKind::tunnelled);
+  EXPECT_EQ(shot->session().traced(), f.item);
+  shot->advanceTo(1);  // tv-render's tick loop: the failure's tick stays
+  EXPECT_EQ(shot->session().frame(), f.frame);
+  draw(*shot);
+  EXPECT_NE(drawnText("Details").find("tunnelled through wall tile"), std::string::npos);
+  EXPECT_NE(drawnText("World").find("tunnelled through wall tile"), std::string::npos);
+}
+
+TEST_F(DebuggerDriver, AStillOfARunThatNeverFailsSaysSoInsteadOfAPicture) {  // negative control
+  try {
+    (void)still({"--scene", "bullets-wall", "--mover", "continuous", "--first-failure"});
+    FAIL() << "the exact sweep never tunnels: there is no failure to show";
+  } catch (const ui::NoFailure& e) {
+    EXPECT_NE(e.message.find("no move of bullets-wall"), std::string::npos) << e.message;
+  }
+}
+
+// tv-render --open FILE --what-if discrete --first-failure: the recorded run beside its re-run
+// at the first re-run move that tunnelled — the call the what-if report names, its bullet
+// traced in both panels, the re-run's move saying it went through the wall.
+TEST_F(DebuggerDriver, AWhatIfStillOpensAtTheFirstReRunMoveThatTunnelled) {
+  const auto shot = still({"--open", sampleRecording(), "--what-if", "discrete", "--first-failure"});
+  ReplayOptions ro;
+  ro.mover = MoverSpec{.kind = MoverKind::discrete};
+  ro.tolerant = true;
+  const WhatIfReport report = Replay::open(sampleRecording(), ro).whatIf();
+  const auto first = std::find_if(report.differences.begin(), report.differences.end(),
+                                  [](const MoveDifference& d) { return d.tunnelled || d.overlapping; });
+  ASSERT_NE(first, report.differences.end());
+  ASSERT_EQ(shot->session().size(), 2u);
+  EXPECT_EQ(shot->session().frame(), first->frame);
+  EXPECT_EQ(shot->session().call(), first->call);
+  EXPECT_EQ(shot->session().traced(), first->item);
+  ASSERT_NE(shot->session().panel(1).callTrace(), nullptr);
+  // Every re-run tunnel is listed, against the what-if panel.
+  EXPECT_EQ(shot->failures().entries.size(), report.tunnelled + report.overlapping);
+  draw(*shot);
+  EXPECT_NE(drawnText("Details").find("tunnelled through wall"), std::string::npos)
+      << drawnText("Details");
+  // The first re-run move that differs is not always a failure: this one is (a control that the
+  // still did not merely go to the first difference).
+  EXPECT_TRUE(first->tunnelled);
+}
+
+TEST_F(DebuggerDriver, AWhatIfUnderAnExactMoverHasNoFailureToShow) {  // negative control
+  EXPECT_THROW(
+      (void)still({"--open", sampleRecording(), "--what-if", "continuous", "--first-failure"}),
+      ui::NoFailure);
 }
 
 }  // namespace

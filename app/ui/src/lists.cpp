@@ -162,7 +162,8 @@ void itemsContents(const Source& s, OutlinerState& st, Actions& a) {
 
 // [SECTION] failures ----------------------------------------------------------------------------
 
-void failuresContents(std::span<Source* const> panels, const FailureList& list, Actions& a) {
+void failuresContents(std::span<Source* const> panels, const FailureList& list,
+                      std::optional<std::size_t> shown, bool& reveal, Actions& a) {
   if (!list.note.empty()) ImGui::TextColored(colour(pal::kDim), "%s", list.note.c_str());
   for (std::size_t p = 0; p < panels.size(); ++p) {
     std::size_t n = 0;
@@ -170,6 +171,13 @@ void failuresContents(std::span<Source* const> panels, const FailureList& list, 
     const std::string who = panels[p]->moverName();
     ImGui::TextColored(colour(n > 0 ? pal::kBad : pal::kGood), "%s: %zu failed move%s%s",
                        who.c_str(), n, n == 1 ? "" : "s", list.complete ? "" : " so far");
+    if (p < list.summary.size() && !list.summary[p].empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, pal::kDim);
+      ImGui::Indent(12.0f);
+      ImGui::TextWrapped("%s", list.summary[p].c_str());
+      ImGui::Unindent(12.0f);
+      ImGui::PopStyleColor();
+    }
   }
   if (!list.complete) {
     ImGui::TextColored(colour(pal::kDim), "looking: %s %" PRIu64 "...",
@@ -203,8 +211,10 @@ void failuresContents(std::span<Source* const> panels, const FailureList& list, 
                                 : line;
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::PushID(r);
-    if (ImGui::Selectable("##failure", false, 0, {0.0f, line + whatH + 2.0f}))
+    const bool marked = shown && *shown == static_cast<std::size_t>(r);
+    if (ImGui::Selectable("##failure", marked, 0, {0.0f, line + whatH + 2.0f}))
       a.failure = static_cast<std::size_t>(r);
+    if (marked && reveal) ImGui::SetScrollHereY(0.3f);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("%s%s: %s", head, who.c_str(), e.failure.what.c_str());
     ImGui::PopID();
@@ -229,10 +239,14 @@ void failuresContents(std::span<Source* const> panels, const FailureList& list, 
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(list.entries.size()),
                   2.0f * line + 2.0f + ImGui::GetStyle().ItemSpacing.y);
+    if (reveal && shown && *shown < list.entries.size()) {
+      clipper.ForceDisplayRangeByIndices(static_cast<int>(*shown), static_cast<int>(*shown) + 1);
+    }
     while (clipper.Step()) {
       for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) row(r);
     }
   }
+  reveal = false;
   ImGui::EndChild();
 }
 

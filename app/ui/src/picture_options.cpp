@@ -113,6 +113,10 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       o.timing = true;
       continue;
     }
+    if (arg == "--first-failure") {
+      o.firstFailure = true;
+      continue;
+    }
     if (arg.size() < 3 || arg.substr(0, 2) != "--") {
       throw UsageError{"unexpected argument '" + std::string(arg) + "' (flags start with --)"};
     }

@@ -148,6 +148,23 @@ void Session::trace(std::optional<ItemId> item) {
   for (auto& p : panels_) p->trace(item);
 }
 
+void Session::showFailure(const Failure& f) {
+  goTo(f.frame);
+  if (f.item.valid()) trace(f.item);
+  if (f.call && !primary().sim()) {
+    if (*f.call < calls().size()) selectCall(f.call);
+    return;
+  }
+  if (!f.item.valid()) return;
+  // A scene's tick: that item's move, wherever it falls among the tick's moves.
+  std::optional<std::uint32_t> move;
+  const auto all = calls();
+  for (std::uint32_t k = 0; k < all.size(); ++k) {
+    if (all[k].item == f.item) move = k;
+  }
+  if (move) selectCall(move);
+}
+
 Rect Session::followView() const {
   Rect r = primary().followView();
   for (const auto& p : panels_) r = unite(r, p->followView(primary().followMinSide()));

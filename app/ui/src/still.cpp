@@ -12,6 +12,7 @@
 #include "tv/app/work_limit.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
+#include "tv/ui/checks.hpp"
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
 
@@ -45,6 +46,7 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
     } else if (arg == "--frame") {
       r.frame = app::parseWhole<UsageError>("frame", value(i, arg));
       picked = "--frame";
+      r.placedBy = picked;
     } else if (arg == "--item") {
       r.item = std::string(value(i, arg));
       picked = "--item";
@@ -53,6 +55,7 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
       if (k > 0xFFFFFFFEu) throw UsageError{"--call: " + std::to_string(k) + " is too large"};
       r.call = static_cast<std::uint32_t>(k);
       picked = "--call";
+      r.placedBy = picked;
     } else if (arg == "--what-if") {
       r.whatIf = app::parseMoverFlag<UsageError>("what-if", value(i, arg));
       picked = "--what-if";
@@ -71,7 +74,19 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
     if (picked) throw UsageError{std::string(picked) + ": only with a recording (--open FILE)"};
     return std::nullopt;
   }
+  if (r.updatesAsMoves && !r.whatIf)
+    throw UsageError{"--updates-as-moves: goes with --what-if MOVER (the re-run it is about)"};
   return r;
+}
+
+void checkFirstFailure(const PictureOptions& o, const std::optional<RecordingFlags>& r) {
+  if (!o.firstFailure) return;
+  std::string placed = r ? r->placedBy : std::string();
+  if (placed.empty() && o.tickGiven) placed = o.ticks.size() > 1 ? "--ticks" : "--tick";
+  if (!placed.empty()) {
+    throw UsageError{placed + ": --first-failure picks the " + (r ? "frame and call" : "tick") +
+                     " (of the run's first failure)"};
+  }
 }
 
 void rejectSceneFlags(const PictureOptions& o) {
@@ -200,24 +215,58 @@ void showRecorded(Session& session, const RecordingFlags& r) {
 Still::Still(const PictureOptions& o, const std::optional<RecordingFlags>& r)
     : o_(o), recorded_(r) {
   (void)overlaysFor(o);  // a bad --hide/--show fails before anything runs
+  checkFirstFailure(o, r);
   if (r) {
     rejectSceneFlags(o);
-    if (r->whatIf || r->updatesAsMoves) {
-      throw UsageError{
-          std::string(r->whatIf ? "--what-if" : "--updates-as-moves") +
-          ": a what-if run is shown by tv-debugger (tv-replay --mover prints its report)"};
-    }
-    session_ = std::make_unique<Session>(ReplaySource::open(r->path));
+    // The recorded run, and a what-if re-run beside it, as the debugger opens them.
+    std::unique_ptr<ReplaySource> recorded = ReplaySource::open(r->path);
+    std::unique_ptr<Source> whatIf;
+    if (r->whatIf) whatIf = recorded->whatIf(*r->whatIf, r->updatesAsMoves);
+    session_ = std::make_unique<Session>(std::move(recorded));
     showRecorded(*session_, *r);
-    return;
+    if (whatIf) {
+      std::vector<std::unique_ptr<Source>> others;
+      others.push_back(std::move(whatIf));
+      session_->compareWith(std::move(others));
+    }
+  } else {
+    session_ = std::make_unique<Session>(sceneSources(o));
   }
-  session_ = std::make_unique<Session>(sceneSources(o));
+  if (o.firstFailure || (r && r->whatIf)) findFailures();
+}
+
+void Still::findFailures() {
+  // The debugger's own checks, run to the end here: the same list its Failures tab shows.
+  Checks checks;
+  checks.reset(*session_, true);
+  checks.advance(1e300);
+  failures_ = checks.failures();
+  checked_ = true;
+  if (!o_.firstFailure) return;
+  shown_ = firstFailureIndex(failures_);
+  if (!shown_) {
+    // A scene's looked-at count is of ticks run; a recording's, the last frame's index.
+    const std::uint64_t looked = failures_.looked + (session_->primary().sim() ? 0 : 1);
+    std::string what = session_->primary().name();
+    if (session_->comparing()) {
+      std::string movers;
+      for (std::size_t k = 0; k < session_->size(); ++k)
+        movers += (movers.empty() ? "" : ", ") + session_->panel(k).moverName();
+      what += " (" + movers + ")";
+    }
+    throw NoFailure{"no move of " + what + " failed in " + std::to_string(looked) + " " +
+                    frameWord(session_->primary()) + "s"};
+  }
+  // The session goes there now; the view (framing, inspector, the marked row) at beginImage.
+  ViewState v;
+  v.failures = failures_;
+  goToFailure(*session_, v, *shown_);
 }
 
 Still::~Still() = default;
 
 void Still::advanceTo(std::uint64_t tick) {
-  if (recorded_) return;
+  if (recorded_ || shown_) return;
   try {
     // First as far as the scene goes: a tick after every mover's end is refused, not run for
     // ever; a mover that ended early then runs on to the tick the others reach.
@@ -264,8 +313,21 @@ void Still::beginImage() {
   }
   view_.revealCall = true;
   view_.caption = o_.compare ? o_.caption : "";
-  view_.failures.note = "the debugger lists every failure of the run";
-  view_.failures.complete = true;
+  if (checked_) {
+    view_.failures = failures_;
+  } else {
+    view_.failures.note = "the debugger lists every failure of the run";
+    view_.failures.complete = true;
+  }
+  if (shown_) {
+    // The first failure, as "go" shows it: the failing panel inspected, its row marked, every
+    // panel framed on the failing move unless --view names a rect.
+    const Rect keep = frame;
+    goToFailure(*session_, view_, *shown_);
+    if (o_.view == ViewKind::rect) {
+      for (DebuggerState& st : view_.panels) st.frameView = keep;
+    }
+  }
 }
 
 void Still::drawFrame(ImVec2 display) {

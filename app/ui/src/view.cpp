@@ -605,7 +605,7 @@ void drawColumn(Session& s, ViewState& v, const Column& c, Actions& a) {
       if (ImGui::BeginTabItem(failures, nullptr, flag(Tab::failures))) {
         ImGui::BeginChild("failures");
         const auto all = s.panels();
-        failuresContents(all, v.failures, a);
+        failuresContents(all, v.failures, v.shownFailure, v.revealFailure, a);
         ImGui::EndChild();
         ImGui::EndTabItem();
       }
@@ -625,6 +625,29 @@ void drawColumn(Session& s, ViewState& v, const Column& c, Actions& a) {
 }  // namespace
 
 // [SECTION] the view ------------------------------------------------------------------------------
+
+std::optional<std::size_t> firstFailureIndex(const FailureList& list) {
+  std::optional<std::size_t> first;
+  for (std::size_t i = 0; i < list.entries.size(); ++i) {
+    if (!first || list.entries[i].failure.frame < list.entries[*first].failure.frame) first = i;
+  }
+  return first;
+}
+
+void goToFailure(Session& s, ViewState& v, std::size_t index) {
+  if (index >= v.failures.entries.size()) return;
+  const FailureList::Entry e = v.failures.entries[index];
+  s.showFailure(e.failure);
+  syncPanels(v, s);
+  v.inspected = std::min(e.panel, s.size() - 1);
+  v.showTab = Tab::inspector;
+  v.revealCall = true;
+  v.shownFailure = index;
+  v.revealFailure = true;
+  // Centred and zoomed on the failing move, in every panel.
+  const Rect r = s.followView();
+  for (DebuggerState& st : v.panels) st.frameView = r;
+}
 
 Actions sessionView(Session& s, ViewState& v, ImVec2 origin, ImVec2 size) {
   syncPanels(v, s);

@@ -1,6 +1,7 @@
 // What happened, in words, from what core and the scene's rules recorded.
 #include "tv/ui/words.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -139,7 +140,8 @@ Said whatHappened(const MoveTrace& m, const Source& s, const Failure* failed) {
     said.text = did;
     said.brief = first.empty() ? did : first;
   } else {
-    said.brief = said.text;
+    // The failure's first clause: "tunnelled through wall" of "..., 32 from the recorded end".
+    said.brief = said.text.substr(0, std::min(said.text.find(", "), said.text.find(" (")));
     if (!did.empty()) said.text += " (" + did + ")";
   }
   return said;

@@ -11,13 +11,15 @@
 
 namespace tv {
 
+/// One body of a Batch::step: an item of the world and where it is heading this tick.
 struct BatchMove {
-  ItemId item;
+  ItemId item;  ///< an item of the world, at most once per step
   Vec2 goal;  ///< where it would be at the end of the tick if nothing stopped it
 };
 
+/// Where one body of the last step ended, and what it met.
 struct BatchOutcome {
-  Vec2 position;
+  Vec2 position;  ///< the item's position after the step (top-left), world units
   std::span<const Collision> collisions;  ///< in time order; valid until the next step
 };
 
@@ -54,7 +56,9 @@ class Batch {
   void step(World& world, std::span<const BatchMove> moves, Filter filter = {},
             int maxEvents = 4096);
 
+  /// Bodies in the last step (as many as its `moves`).
   [[nodiscard]] std::size_t size() const { return bodies_.size(); }
+  /// Body `i` of the last step, in the order of its `moves`; i < size().
   [[nodiscard]] BatchOutcome outcome(std::size_t i) const;
 
  private:

@@ -9,6 +9,8 @@
 
 namespace tv {
 
+/// What every call of tv throws on bad input; `what()` names the call, the argument and its
+/// value ("tv::World::add: w must be finite and > 0, but was -1").
 class Error : public std::invalid_argument {
  public:
   using std::invalid_argument::invalid_argument;
@@ -19,9 +21,11 @@ class Error : public std::invalid_argument {
 
 /// Each throws `Error` like "tv::World::add: w must be finite and > 0, but was -1".
 void requireFinite(std::string_view where, std::string_view name, double v);
+/// Throws unless `v` is finite and > 0: "<where>: <name> must be finite and > 0, but was <v>".
 void requirePositive(std::string_view where, std::string_view name, double v);
 /// "x must be within ±2^500 (about 3.27e150), but was 1e+155": the range of geometry.hpp.
 void requireInRange(std::string_view where, std::string_view name, double v);
+/// Throws `Error("<where>: <what>")`.
 [[noreturn]] void fail(std::string_view where, std::string_view what);
 
 }  // namespace tv

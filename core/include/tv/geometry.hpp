@@ -35,34 +35,45 @@
 
 namespace tv {
 
+/// A point or a displacement, in world units; y grows downwards as on screen.
 struct Vec2 {
-  double x = 0.0;
-  double y = 0.0;
+  double x = 0.0;  ///< horizontal, world units
+  double y = 0.0;  ///< vertical (down is positive), world units
 
+  /// Componentwise sum.
   friend constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  /// Componentwise difference.
   friend constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  /// Scaled by `s`.
   friend constexpr Vec2 operator*(Vec2 a, double s) { return {a.x * s, a.y * s}; }
+  /// Scaled by `s`.
   friend constexpr Vec2 operator*(double s, Vec2 a) { return {a.x * s, a.y * s}; }
+  /// Exact comparison of both components (no tolerance: see the tolerance model above).
   friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
 };
 
+/// Euclidean length (std::hypot: no overflow for large components).
 [[nodiscard]] inline double length(Vec2 v) { return std::hypot(v.x, v.y); }
 
 /// Axis-aligned rectangle: top-left corner (x, y), size (w, h); y grows downwards as on screen.
+///
+///     tv::Rect tile{16, 200, 16, 16};   // x, y, w, h: covers [16, 32) × [200, 216)
 struct Rect {
-  double x = 0.0;
-  double y = 0.0;
-  double w = 0.0;
-  double h = 0.0;
+  double x = 0.0;  ///< left edge, world units
+  double y = 0.0;  ///< top edge, world units
+  double w = 0.0;  ///< width, world units; > 0 for anything the World accepts
+  double h = 0.0;  ///< height, world units; > 0 for anything the World accepts
 
-  [[nodiscard]] constexpr double left() const { return x; }
-  [[nodiscard]] constexpr double top() const { return y; }
-  [[nodiscard]] constexpr double right() const { return x + w; }
-  [[nodiscard]] constexpr double bottom() const { return y + h; }
-  [[nodiscard]] constexpr Vec2 position() const { return {x, y}; }
-  [[nodiscard]] constexpr Vec2 size() const { return {w, h}; }
+  [[nodiscard]] constexpr double left() const { return x; }       ///< x
+  [[nodiscard]] constexpr double top() const { return y; }        ///< y
+  [[nodiscard]] constexpr double right() const { return x + w; }  ///< x + w, rounded once
+  [[nodiscard]] constexpr double bottom() const { return y + h; }  ///< y + h, rounded once
+  [[nodiscard]] constexpr Vec2 position() const { return {x, y}; }  ///< the top-left corner
+  [[nodiscard]] constexpr Vec2 size() const { return {w, h}; }      ///< {w, h}
+  /// The same size with its top-left corner at `p`.
   [[nodiscard]] constexpr Rect at(Vec2 p) const { return {p.x, p.y, w, h}; }
-  [[nodiscard]] constexpr Vec2 center() const { return {x + w * 0.5, y + h * 0.5}; }
+  [[nodiscard]] constexpr Vec2 center() const { return {x + w * 0.5, y + h * 0.5}; }  ///< middle
+  /// Exact comparison of the four fields.
   friend constexpr bool operator==(const Rect& a, const Rect& b) = default;
 };
 
@@ -103,6 +114,7 @@ inline constexpr double kMaxMagnitude = 0x1p500;  ///< ≈ 3.27e150
 
 /// True when every field is finite.
 [[nodiscard]] inline bool isFinite(Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+/// True when x, y, w and h are all finite.
 [[nodiscard]] inline bool isFinite(const Rect& r) {
   return std::isfinite(r.x) && std::isfinite(r.y) && std::isfinite(r.w) && std::isfinite(r.h);
 }

@@ -12,22 +12,31 @@
 
 namespace tv {
 
+/// A cell of the spatial hash by its indices: [x·size, (x+1)·size) × [y·size, (y+1)·size).
 struct Cell {
-  std::int64_t x = 0;
-  std::int64_t y = 0;
+  std::int64_t x = 0;  ///< column index
+  std::int64_t y = 0;  ///< row index
+  /// Same column and row.
   friend constexpr bool operator==(Cell a, Cell b) = default;
 };
 
 /// Inclusive range of cells.
 struct CellRange {
-  std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  /// @name First and last column and row, inclusive
+  /// @{
+  std::int64_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;  ///< cell indices; default: empty
+  /// @}
+  /// True when it holds no cell (x1 < x0 or y1 < y0).
   [[nodiscard]] constexpr bool empty() const { return x1 < x0 || y1 < y0; }
+  /// Cells it holds (0 when empty).
   [[nodiscard]] constexpr std::int64_t count() const {
     return empty() ? 0 : (x1 - x0 + 1) * (y1 - y0 + 1);
   }
+  /// True when `c` is in the range.
   [[nodiscard]] constexpr bool contains(Cell c) const {
     return x0 <= c.x && c.x <= x1 && y0 <= c.y && c.y <= y1;
   }
+  /// Same bounds (two empty ranges with different bounds are not equal).
   friend constexpr bool operator==(const CellRange& a, const CellRange& b) = default;
 };
 
@@ -38,12 +47,16 @@ inline constexpr double kMaxCellIndex = 4503599627370496.0;  // 2^52
 inline constexpr CellRange kEveryCell{-(std::int64_t{1} << 53), -(std::int64_t{1} << 53),
                                       std::int64_t{1} << 53, std::int64_t{1} << 53};
 
+/// Cell arithmetic for one cell size: which cells a point, a rect or a moving rect meets.
+///
+///     tv::Grid g(32);
+///     g.cellsOf({40, 0, 30, 10});   // columns 1..2, row 0
 class Grid {
  public:
   /// `cellSize` in world units, finite and > 0 (checked by the world).
   explicit constexpr Grid(double cellSize) : size_(cellSize), inverse_(1.0 / cellSize) {}
 
-  [[nodiscard]] constexpr double cellSize() const { return size_; }
+  [[nodiscard]] constexpr double cellSize() const { return size_; }  ///< world units
   /// 1 / cellSize, rounded.
   [[nodiscard]] constexpr double inverse() const { return inverse_; }
 
@@ -57,11 +70,13 @@ class Grid {
     const auto t = static_cast<std::int64_t>(q);
     return static_cast<double>(t) > q ? t - 1 : t;
   }
+  /// The cell holding point `p` (the same precondition as `index`).
   [[nodiscard]] Cell cellAt(Vec2 p) const { return {index(p.x), index(p.y)}; }
   /// World position of a cell's top-left corner.
   [[nodiscard]] Vec2 origin(Cell c) const {
     return {static_cast<double>(c.x) * size_, static_cast<double>(c.y) * size_};
   }
+  /// The square a cell covers, world units.
   [[nodiscard]] Rect bounds(Cell c) const {
     const Vec2 o = origin(c);
     return {o.x, o.y, size_, size_};

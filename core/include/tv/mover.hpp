@@ -13,6 +13,7 @@
 
 namespace tv {
 
+/// The movement policies, from the naive negative control to the exact sweep.
 enum class MoverKind : std::uint8_t {
   /// Teleport to the goal, then push out of every overlap along its shallowest axis — the
   /// naive mover many games write. Cost: one rect query. Fails: tunnels whenever a step
@@ -52,8 +53,9 @@ enum class MoverKind : std::uint8_t {
   adaptive,
 };
 
+/// A mover by kind and options; `parseMover("substep-sweep")` gives one by name.
 struct MoverSpec {
-  MoverKind kind = MoverKind::continuous;
+  MoverKind kind = MoverKind::continuous;  ///< the policy (default: the exact sweep)
   /// substep: longest piece in world units, finite and >= 0; 0 means half the world's smallest
   /// item extent (tile / 2 in a tile map, the article's choice).
   double maxStep = 0.0;
@@ -85,12 +87,17 @@ struct MoverEntry {
 /// One line on what the named mover does and when it fails.
 [[nodiscard]] std::string_view moverDescription(std::string_view name);
 
+/// A mover: moves items of any World by its policy, keeping per-item state where the policy
+/// has some (the pixel mover's sub-pixel remainders).
+///
+///     tv::Mover naive(tv::parseMover("discrete"));
+///     tv::MoveResult r = naive.move(world, bullet, {x + 32, y});   // may tunnel: compare it
 class Mover {
  public:
   /// Throws tv::Error on a spec out of range (names the field and value).
   explicit Mover(MoverSpec spec = {});
 
-  [[nodiscard]] const MoverSpec& spec() const { return spec_; }
+  [[nodiscard]] const MoverSpec& spec() const { return spec_; }  ///< as constructed
 
   /// Moves `id` towards `goal` by this policy. Collisions are valid until the next move by this
   /// mover or the world. Throws tv::Error on bad input, leaving the world unchanged.

@@ -32,27 +32,41 @@ struct MoveOptions;
 struct MoveResult;
 struct SegmentHit;
 
+/// What a World, Mover, Batch and FixedStep report to the one observer attached to them (a
+/// tv::Recorder). Each function is called after the call it names succeeded, with its inputs
+/// and results; see the file's overview for the rules.
 class WorldObserver {
  public:
   virtual ~WorldObserver() = default;
 
   /// `World::attach`: the world as it is now (a recording opens with its snapshot).
   virtual void attached(const World& world) = 0;
+  /// `World::detach` (or another observer attached): nothing more comes from `world`.
   virtual void detached(const World& world) = 0;
 
   // -- outermost calls, once they have succeeded -------------------------------------------------
+  /// `World::add` returned `id` for the rect `r`.
   virtual void added(ItemId id, const Rect& r) = 0;
+  /// `World::remove(id)`.
   virtual void removed(ItemId id) = 0;
   /// Both `update` overloads (the position one reports the whole rect).
   virtual void updated(ItemId id, const Rect& r) = 0;
+  /// `World::move(id, goal, ...)` with its options, and what it returned.
   virtual void moved(ItemId id, Vec2 goal, const MoveOptions& o, const MoveResult& r) = 0;
+  /// `World::check(id, goal, ...)`: a move that changed nothing, and what it would have done.
   virtual void checked(ItemId id, Vec2 goal, const MoveOptions& o, const MoveResult& r) = 0;
+  /// `World::project(rect, goal, ...)`: a move of a rect that is not an item.
   virtual void projected(const Rect& rect, Vec2 goal, const MoveOptions& o,
                          const MoveResult& r) = 0;
+  /// `World::queryRect(r, ..., skip)` found these items, in the order it returned them.
   virtual void queriedRect(const Rect& r, ItemId skip, std::span<const ItemId> found) = 0;
+  /// `World::queryPoint(p, ...)` found these items.
   virtual void queriedPoint(Vec2 p, std::span<const ItemId> found) = 0;
+  /// `World::querySegment(a, b, ...)` found these hits, in order along the segment.
   virtual void queriedSegment(Vec2 a, Vec2 b, std::span<const SegmentHit> hits) = 0;
+  /// `World::anyOverlap(r, ..., skip)` answered `any`.
   virtual void askedOverlap(const Rect& r, ItemId skip, bool any) = 0;
+  /// `World::addResponse(name, ...)` registered a user response as `id`.
   virtual void responseAdded(std::string_view name, ResponseId id) = 0;
   /// `mover.move(world, id, goal, ...)`; `start` is the item's rect before the move.
   virtual void moverMoved(const Mover& mover, ItemId id, const Rect& start, Vec2 goal,
@@ -68,7 +82,9 @@ class WorldObserver {
   }
 
   // -- user code's answers, during the call --------------------------------------------------
+  /// The filter was asked about (`item`, `other`) and answered `answer`.
   virtual void filtered(ItemId item, ItemId other, ResponseId answer) = 0;
+  /// A user response, given collision `c` and the leg's `goal`, returned `leg`.
   virtual void responded(const Collision& c, Vec2 goal, const Leg& leg) = 0;
   /// The outermost call threw: forget the answers reported since it began.
   virtual void failed() = 0;
@@ -83,6 +99,7 @@ class WorldObserver {
   /// Marks an outermost call (used by World, Mover and Batch).
   class Scope {
    public:
+    /// Enters an outermost call on `o` (left when the scope ends).
     explicit Scope(WorldObserver& o) : o_(o) { ++o_.depth_; }
     ~Scope() { --o_.depth_; }
     Scope(const Scope&) = delete;
@@ -94,8 +111,9 @@ class WorldObserver {
 
   /// Asks a filter and reports its answer; wrap one in a Filter for the call's duration.
   struct Watched {
-    const Filter& filter;
-    WorldObserver& observer;
+    const Filter& filter;      ///< the caller's filter
+    WorldObserver& observer;   ///< where its answers go
+    /// The filter's answer for (`item`, `other`), reported to the observer.
     ResponseId operator()(ItemId item, ItemId other) const {
       const ResponseId r = filter(item, other);
       observer.filtered(item, other, r);

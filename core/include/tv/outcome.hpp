@@ -22,6 +22,7 @@ namespace tv {
 
 class World;
 
+/// What judgeMove found: the item a move passed through, and the one it ended inside.
 struct MoveOutcome {
   /// An item the move passed clean through (the one nearest its start), or invalid.
   ItemId passedThrough;

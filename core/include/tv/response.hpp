@@ -11,6 +11,7 @@
 
 namespace tv {
 
+/// A response by number: the built-ins below, then those `World::addResponse` registers.
 using ResponseId = std::uint16_t;
 
 /// The built-in responses. Users register more with `World::addResponse`.
@@ -20,7 +21,7 @@ inline constexpr ResponseId cross = 1;   ///< report, pass through, keep going
 inline constexpr ResponseId slide = 2;   ///< stop on the normal's axis, keep the other
 inline constexpr ResponseId bounce = 3;  ///< reflect the rest of the move about the normal
 inline constexpr ResponseId ignore = 0xFFFF;  ///< from a filter: the pair does not interact
-inline constexpr ResponseId kBuiltinCount = 4;
+inline constexpr ResponseId kBuiltinCount = 4;  ///< ids from here on are user responses
 }  // namespace response
 
 /// One collision, with everything the debugger draws.
@@ -34,8 +35,8 @@ struct Collision {
   Vec2 normal;        ///< axis normal, from other towards item
   Vec2 touch;         ///< item position at contact, placed from other's edge
   Rect itemRect;      ///< item at the start of the leg
-  Rect otherRect;
-  ResponseId response = response::slide;
+  Rect otherRect;     ///< what it met, as it stood
+  ResponseId response = response::slide;  ///< what the filter chose for the pair
   /// The response's own data: where it sends the item next (slide or bounce target; the touch
   /// point for touch; the unchanged goal for cross).
   Vec2 target;
@@ -43,8 +44,8 @@ struct Collision {
 
 /// What a response hands back: the next leg of the move.
 struct Leg {
-  Vec2 start;
-  Vec2 goal;
+  Vec2 start;  ///< where the next leg begins (the collision's touch point, usually)
+  Vec2 goal;   ///< where it aims
   bool passThrough = false;  ///< exclude `other` from the rest of this move (cross)
 };
 
@@ -53,9 +54,18 @@ struct Leg {
 using ResponseFn = Leg (*)(const Collision& c, Vec2 goal);
 
 /// The built-ins, exposed so custom responses can build on them.
+///
+///     // "stick": stop at the contact, as touch does, but only when moving down
+///     tv::Leg stick(const tv::Collision& c, tv::Vec2 goal) {
+///       return c.normal.y < 0 ? tv::touchResponse(c, goal) : tv::slideResponse(c, goal);
+///     }
+///     tv::ResponseId id = world.addResponse("stick", &stick);
 [[nodiscard]] Leg touchResponse(const Collision& c, Vec2 goal);
+/// Passes through `other` (excluded from the rest of the move) and keeps the goal.
 [[nodiscard]] Leg crossResponse(const Collision& c, Vec2 goal);
+/// From the touch point, keeps the goal's coordinate along the surface and stops on the normal.
 [[nodiscard]] Leg slideResponse(const Collision& c, Vec2 goal);
+/// From the touch point, the rest of the move reflected about the surface.
 [[nodiscard]] Leg bounceResponse(const Collision& c, Vec2 goal);
 
 /// Chooses the response for a pair, or `response::ignore`. A non-owning reference to any
@@ -64,6 +74,7 @@ using ResponseFn = Leg (*)(const Collision& c, Vec2 goal);
 class Filter {
  public:
   constexpr Filter() = default;
+  /// Refers to `f` (not copied): `f` must outlive every call that uses this filter.
   template <class F>
     requires(!std::is_same_v<std::remove_cvref_t<F>, Filter> &&
              std::is_invocable_r_v<ResponseId, F&, ItemId, ItemId>)
@@ -83,6 +94,7 @@ class Filter {
     return f;
   }
 
+  /// The response for `item` meeting `other` (response::slide with no callable).
   [[nodiscard]] ResponseId operator()(ItemId item, ItemId other) const {
     return fn_ ? fn_(ctx_, item, other) : response::slide;
   }

@@ -12,14 +12,16 @@
 
 namespace tv {
 
+/// What a sweep found.
 enum class SweepKind : std::uint8_t {
   miss,     ///< the interiors never intersect on the way to the goal
   hit,      ///< they first intersect at `ti` in [0, 1)
   overlap,  ///< they already intersect at the start
 };
 
+/// The result of sweeping one rect against one obstacle (sweepRect).
 struct Sweep {
-  SweepKind kind = SweepKind::miss;
+  SweepKind kind = SweepKind::miss;  ///< miss, hit or overlap
   /// hit: time of impact in [0, 1) along the move; overlap: minus the intersection area, so
   /// that deeper overlaps sort first (as in bump.lua).
   double ti = 1.0;
@@ -42,7 +44,7 @@ struct Sweep {
 
 /// Where a segment crosses a rect's open interior.
 struct SegmentClip {
-  bool hit = false;
+  bool hit = false;  ///< the segment crosses the interior (t0 and t1 are valid)
   double t0 = 0.0;  ///< entry, in [0, 1] along the segment
   double t1 = 0.0;  ///< exit, in [t0, 1]
 };

@@ -10,6 +10,14 @@
 
 namespace tv {
 
+/// The fixed-step accumulator: a frame's time in, the number of physics ticks to run out.
+///
+///     tv::FixedStep clock;                             // 1/60 s ticks
+///     for (int n = clock.advance(frameSeconds); n > 0; --n) {
+///       previous = world.rect(player).position();      // the state before each tick
+///       world.move(player, goal, filter);
+///     }
+///     draw(tv::interpolate(previous, world.rect(player).position(), clock.alpha()));
 class FixedStep {
  public:
   /// `step`: seconds per tick, finite and > 0 (default 1/60). `maxFrameTime`: longest frame
@@ -24,11 +32,12 @@ class FixedStep {
 
   /// Where the render falls between the previous tick's state (0) and the current one (1).
   [[nodiscard]] double alpha() const { return accumulator_ / step_; }
-  [[nodiscard]] double step() const { return step_; }
-  [[nodiscard]] double maxFrameTime() const { return maxFrameTime_; }
+  [[nodiscard]] double step() const { return step_; }                  ///< seconds per tick
+  [[nodiscard]] double maxFrameTime() const { return maxFrameTime_; }  ///< seconds
+  /// Seconds of frame time not yet run as ticks, in [0, step).
   [[nodiscard]] double accumulator() const { return accumulator_; }
-  [[nodiscard]] std::uint64_t ticks() const { return ticks_; }
-  [[nodiscard]] std::uint64_t frames() const { return frames_; }
+  [[nodiscard]] std::uint64_t ticks() const { return ticks_; }    ///< ticks handed out so far
+  [[nodiscard]] std::uint64_t frames() const { return frames_; }  ///< advance() calls so far
   /// Frames longer than maxFrameTime, whose excess was dropped.
   [[nodiscard]] std::uint64_t clampedFrames() const { return clamped_; }
   /// Reports every advance to `observer` (a recorder marks a frame there); null to stop.

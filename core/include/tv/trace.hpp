@@ -15,6 +15,7 @@
 
 namespace tv {
 
+/// False when tv was built with TV_TRACE=OFF: a MoveTrace passed to a move then stays empty.
 #ifdef TV_TRACE_DISABLED
 inline constexpr bool kTraceCompiledIn = false;
 #else
@@ -23,19 +24,24 @@ inline constexpr bool kTraceCompiledIn = true;
 
 /// One swept leg: the rect at its start and the position it aimed for.
 struct TraceLeg {
-  Rect start;
-  Vec2 goal;
+  Rect start;  ///< the rect where the leg began
+  Vec2 goal;   ///< the position it aimed for
 };
 
 /// The filter's answer for one pair it was asked about. Only items the move could meet are
 /// asked (in a swept move, those that would be hit first), so a candidate may have no answer.
 struct TraceAnswer {
-  ItemId other;
-  ResponseId response = response::slide;
+  ItemId other;                           ///< the item asked about
+  ResponseId response = response::slide;  ///< what the filter answered
 };
 
+/// Everything one move visited, tested, asked and hit: what the debugger draws.
+///
+///     tv::MoveTrace t;
+///     world.move(player, goal, filter, {.trace = &t});
+///     for (const tv::Cell& c : t.cells) ...   // the broad phase's cells
 struct MoveTrace {
-  ItemId item;
+  ItemId item;  ///< the item moved (invalid for World::project)
   std::string_view mover;          ///< name of the mover that made the move
   Rect start;                      ///< item before the move
   Vec2 goal;                       ///< what was asked
@@ -47,6 +53,7 @@ struct MoveTrace {
   std::vector<Collision> hits;     ///< collisions, in the order the responses ran
   std::vector<TraceAnswer> answers;  ///< the filter's answers, in the order it gave them
 
+  /// Empties every field, keeping the vectors' memory.
   void clear() {
     item = {};
     mover = {};

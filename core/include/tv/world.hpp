@@ -47,14 +47,16 @@ enum class BroadPhase : std::uint8_t {
   bounds,  ///< every cell of the move's bounding box, as bump.lua does
 };
 
+/// How World::move, check and project search, trace and stop.
 struct MoveOptions {
-  BroadPhase broad = BroadPhase::swept;
+  BroadPhase broad = BroadPhase::swept;  ///< which cells are searched (default: the path's)
   MoveTrace* trace = nullptr;  ///< optional record of what the move did
   /// Responses per move before the item stops where it is (acute pockets, bounce between
   /// walls closer than the move). Range [1, 4096].
   int maxResponses = 64;
 };
 
+/// What a move did: where the item ended and what it met on the way.
 struct MoveResult {
   Vec2 position;  ///< where the item ends (its goal if nothing was hit)
   /// Collisions in the order the responses ran; valid until the next call on the world.
@@ -65,13 +67,14 @@ struct MoveResult {
 /// order, the free slots (what the next add returns) and the responses' names. What a recording
 /// opens with, and what a replay seeks to.
 struct WorldState {
+  /// One slot of the world: a live item, or a free (or retired) slot.
   struct Slot {
     Rect rect;                     ///< alive slots only
     std::uint64_t order = 0;       ///< add order, alive slots only
     std::uint32_t generation = 0;  ///< the live item's, or the next one for a free slot
-    bool alive = false;
+    bool alive = false;            ///< holds a live item
   };
-  double cellSize = 64.0;
+  double cellSize = 64.0;  ///< the world's cell size, world units
   std::vector<Slot> slots;  ///< by slot index
   std::vector<std::uint32_t>
       freeSlots;                       ///< reused from the back; a dead slot not listed is retired
@@ -81,11 +84,28 @@ struct WorldState {
 
 /// An item whose open interior meets a query segment, with where the segment enters and exits.
 struct SegmentHit {
-  ItemId item;
+  ItemId item;  ///< the item crossed
+  /// @name Entry and exit times
+  /// @{
   double t0 = 0.0, t1 = 0.0;  ///< along the segment, 0 at its start and 1 at its end
-  Vec2 entry, exit;
+  /// @}
+  /// @name Entry and exit points
+  /// @{
+  Vec2 entry, exit;  ///< where the segment enters and leaves the interior, world units
+  /// @}
 };
 
+/// Items (axis-aligned rects) in a spatial hash, moved by exact sweeps with responses, and
+/// queried — bump.lua's world, with exact contact and no tunnelling.
+///
+///     tv::World world(32);
+///     tv::ItemId floor = world.add({0, 200, 640, 16});
+///     tv::ItemId player = world.add({40, 180, 10, 13.7});
+///     tv::MoveResult r = world.move(player, {43.5, 190});   // slides along the floor
+///
+/// Every call checks its input and throws tv::Error naming the bad value (an unknown item, a
+/// NaN, a rect out of range), changing nothing. A World is not thread-safe: its queries share
+/// scratch buffers, so one thread at a time.
 class World {
  public:
   /// `cellSize`: side of a spatial-hash cell in world units, in [2^-485, 2^500] ≈ [1e-146,
@@ -106,10 +126,13 @@ class World {
   ItemId addAtGenerationForTesting(const Rect& r, std::uint32_t generation);
   /// Teleports (and may resize) an item; no collision is checked.
   void update(ItemId id, const Rect& r);
+  /// Teleports an item, keeping its size; no collision is checked.
   void update(ItemId id, Vec2 position);
+  /// True when `id` names a live item of this world.
   [[nodiscard]] bool has(ItemId id) const;
+  /// The item's rect; throws tv::Error for an id that is not live.
   [[nodiscard]] Rect rect(ItemId id) const;
-  [[nodiscard]] std::size_t count() const { return count_; }
+  [[nodiscard]] std::size_t count() const { return count_; }  ///< live items
   /// Cells holding at least one item. An item is registered in every cell its half-open
   /// extent [x, right) × [y, bottom) meets: a tile whose right edge lies on a cell line is not
   /// in the cell beyond it. Cells are freed as they empty.
@@ -122,10 +145,11 @@ class World {
   [[nodiscard]] double minExtent() const;
 
   // -- grid ----------------------------------------------------------------------------------
-  [[nodiscard]] const Grid& grid() const { return grid_; }
-  [[nodiscard]] double cellSize() const { return grid_.cellSize(); }
+  [[nodiscard]] const Grid& grid() const { return grid_; }  ///< the cell arithmetic
+  [[nodiscard]] double cellSize() const { return grid_.cellSize(); }  ///< world units
   /// The cell holding `p`; throws tv::Error when p is not finite or too far out for the grid.
   [[nodiscard]] Cell toCell(Vec2 p) const;
+  /// The top-left corner of a cell, world units.
   [[nodiscard]] Vec2 toWorld(Cell c) const { return grid_.origin(c); }
   /// Slots of the items registered in a cell (see idAt), empty if the cell was never used.
   [[nodiscard]] std::vector<std::uint32_t> cellItems(Cell c) const;
@@ -162,6 +186,7 @@ class World {
   /// Registers a response that filters can then return. Names must be unique and non-empty,
   /// and not "ignore" (the special response::ignore).
   ResponseId addResponse(std::string name, ResponseFn fn);
+  /// The name a response was registered under ("slide"...); throws tv::Error for an unknown id.
   [[nodiscard]] std::string_view responseName(ResponseId id) const;
   /// Runs the response `c.response` on a collision: the next leg of the move.
   [[nodiscard]] Leg respond(const Collision& c, Vec2 goal) const;
@@ -172,6 +197,7 @@ class World {
   /// Items whose interior overlaps `r` (touching is not enough), in add order. `skip` is left
   /// out (e.g. the item asking).
   [[nodiscard]] std::vector<ItemId> queryRect(const Rect& r, ItemId skip = {}) const;
+  /// The same into `out` (cleared first), reusing its memory.
   void queryRect(const Rect& r, std::vector<ItemId>& out, ItemId skip = {}) const;
   /// True when an item other than `skip` overlaps `r` and the filter does not ignore the pair
   /// (asked as filter(skip, other)). No allocation; the cheap "is this spot free?".
@@ -186,6 +212,7 @@ class World {
   [[nodiscard]] std::uint64_t stateHash() const;
 
   // -- state and recording ------------------------------------------------------------------
+  /// A copy of everything that decides how the world behaves next (see WorldState).
   [[nodiscard]] WorldState state() const;
   /// Replaces every item by those of `s` (same handles, add orders and free slots), so that this
   /// world then behaves as the one `s` was taken from. `s.cellSize` must equal this world's and
@@ -196,8 +223,9 @@ class World {
   /// Reports every call from now on to `observer` (which first sees the world's current state),
   /// until `detach`. One observer at a time: attaching another detaches the first.
   void attach(WorldObserver& observer);
+  /// Stops reporting; the observer hears `detached`.
   void detach();
-  [[nodiscard]] WorldObserver* observer() const { return observer_.get(); }
+  [[nodiscard]] WorldObserver* observer() const { return observer_.get(); }  ///< or null
 
  private:
   static constexpr std::uint32_t kLastGeneration = 0xFFFFFFFFu;

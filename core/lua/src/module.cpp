@@ -6,7 +6,11 @@
 #include "lua_world.hpp"
 #include "tv/mover.hpp"
 
+#ifdef _WIN32
+#define TV_LUA_EXPORT extern "C" __declspec(dllexport)  // only these leave the DLL
+#else
 #define TV_LUA_EXPORT extern "C" __attribute__((visibility("default")))
+#endif
 
 namespace {
 

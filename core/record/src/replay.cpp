@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -208,6 +209,7 @@ void Replay::Impl::index() {
     pos += 8 + len;
   }
   summary.bytesRead = pos;
+  summary.closed = ended;
   if (!ended && (warnings.empty())) {
     warnings.push_back("the recording has no end mark: the game stopped without closing it");
   }
@@ -313,15 +315,25 @@ Replay& Replay::operator=(Replay&&) noexcept = default;
 Replay::~Replay() = default;
 
 Replay Replay::open(const std::string& path, ReplayOptions options) {
+  errno = 0;
   std::ifstream f(path, std::ios::binary | std::ios::ate);
-  if (!f) fail("tv::Replay", "cannot open '" + path + "'");
+  // The system's reason (no such file, permission denied, a directory) is what the user fixes.
+  if (!f) {
+    const int why = errno;
+    fail("tv::Replay", "cannot open '" + path + "'" + (why ? std::string(": ") + std::strerror(why)
+                                                           : std::string()));
+  }
+  const auto cannotRead = [&path]() {
+    const int why = errno;
+    fail("tv::Replay", "cannot read '" + path + "'" + (why ? std::string(": ") + std::strerror(why)
+                                                           : std::string()));
+  };
   const std::streamoff n = f.tellg();
-  if (n < 0) fail("tv::Replay", "cannot read '" + path + "'");
+  if (n < 0) cannotRead();
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(n));
   f.seekg(0);
-  if (n > 0 && !f.read(reinterpret_cast<char*>(bytes.data()), n)) {
-    fail("tv::Replay", "cannot read '" + path + "'");
-  }
+  errno = 0;
+  if (n > 0 && !f.read(reinterpret_cast<char*>(bytes.data()), n)) cannotRead();
   return fromBytes(std::move(bytes), options);
 }
 

@@ -95,10 +95,13 @@ struct ReplayFilter {
 };
 
 // A move from S to E against the world as it is after it: did it pass through, or end inside,
-// something its filter neither ignores nor crosses?
+// something its filter neither ignores nor crosses? `solid`: the first such item (in add order)
+// it passed through, else the first it ended inside.
 void classify(const World& w, ItemId item, const Rect& S, const Rect& E, const ReplayFilter& f,
-              std::vector<ItemId>& scratch, bool& tunnelled, bool& overlapping) {
+              std::vector<ItemId>& scratch, bool& tunnelled, bool& overlapping, ItemId& solid) {
   tunnelled = overlapping = false;
+  solid = {};
+  ItemId inside;
   const Rect hull = unite(S, E);
   if (rec::cellCount(w.cellSize(), hull) > 65536) return;  // a teleport across the world
   w.queryRect(hull, scratch, item);
@@ -106,7 +109,11 @@ void classify(const World& w, ItemId item, const Rect& S, const Rect& E, const R
     const ResponseId a = f.recordedOr(item, o);
     if (a == response::ignore || a == response::cross) continue;
     const Rect O = w.rect(o);
-    if (overlaps(E, O) && !overlaps(S, O)) overlapping = true;
+    if (overlaps(E, O) && !overlaps(S, O)) {
+      overlapping = true;
+      if (!inside.valid()) inside = o;
+    }
+    const bool before = tunnelled;
     const auto through = [](double s0, double s1, double e0, double e1, double o0, double o1) {
       return (s1 <= o0 && e0 >= o1) || (e1 <= o0 && s0 >= o1);
     };
@@ -121,7 +128,9 @@ void classify(const World& w, ItemId item, const Rect& S, const Rect& E, const R
         spans(S.x, S.right(), O.x, O.right()) && spans(E.x, E.right(), O.x, O.right())) {
       tunnelled = true;
     }
+    if (tunnelled && !before) solid = o;
   }
+  if (!solid.valid()) solid = inside;
 }
 
 }  // namespace
@@ -259,13 +268,14 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
     if (!report) return;
     const Rect E = world->rect(item);
     bool tunnelled = false, overlapping = false;
-    classify(*world, item, S, E, rf, found, tunnelled, overlapping);
+    ItemId solid;
+    classify(*world, item, S, E, rf, found, tunnelled, overlapping, solid);
     ++report->moves;
     const double distance = length(E.position() - recorded);
     const bool differs = !same(E.position(), recorded);
     if (differs || tunnelled || overlapping) {
       report->differences.push_back(
-          {frame, index, item, recorded, E.position(), distance, tunnelled, overlapping});
+          {frame, index, item, recorded, E.position(), distance, tunnelled, overlapping, solid});
     }
     if (tunnelled) ++report->tunnelled;
     if (overlapping) ++report->overlapping;
@@ -277,10 +287,15 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
     if (!classifyRecorded && !options.itemStats) return;
     const Rect E = world->rect(item);
     bool tunnelled = false, overlapping = false;
-    classify(*world, item, S, E, rf, found, tunnelled, overlapping);
+    ItemId solid;
+    classify(*world, item, S, E, rf, found, tunnelled, overlapping, solid);
     if (classifyRecorded && report) {
       if (tunnelled) ++report->recordedTunnelled;
       if (overlapping) ++report->recordedOverlapping;
+      if (tunnelled || overlapping) {
+        report->recordedFailures.push_back({frame, index, item, E.position(), E.position(), 0.0,
+                                            tunnelled, overlapping, solid});
+      }
     }
     if (options.itemStats && !classifyRecorded) {
       bool ends = false;
@@ -414,7 +429,7 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
             const double distance = length(o.position - b.position);
             if (!same(o.position, b.position)) {
               report->differences.push_back(
-                  {frame, index, b.item, b.position, o.position, distance, false, false});
+                  {frame, index, b.item, b.position, o.position, distance, false, false, ItemId{}});
               if (!report->firstDifferentFrame) report->firstDifferentFrame = frame;
             }
             if (distance > farAway && !report->firstImplausibleFrame)

@@ -51,6 +51,8 @@ inline constexpr ImU32 kLabelShadow = IM_COL32(0, 0, 0, 200);
 inline constexpr ImU32 kBad = IM_COL32(255, 90, 90, 255);
 inline constexpr ImU32 kGood = IM_COL32(110, 230, 110, 255);
 inline constexpr ImU32 kDim = IM_COL32(150, 155, 165, 255);
+/// A what-if run: the frame from which the game's recorded goals stop making sense.
+inline constexpr ImU32 kImplausible = IM_COL32(200, 120, 255, 255);
 
 // -- comparisons -----------------------------------------------------------------------------
 /// The movers of a comparison drawn in one view: the first keeps the usual colours, the others

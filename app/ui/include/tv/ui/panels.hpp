@@ -77,6 +77,9 @@ struct FailureList {
   bool complete = false;       ///< the whole run has been looked at
   std::uint64_t looked = 0;    ///< frames looked at so far
   std::string note;            ///< why there is none ("the debugger lists them", an error)
+  /// Per panel, the whole run's figures in a line (a what-if run's report: moves re-run, how
+  /// many ended elsewhere, where the runs part); empty where there is none.
+  std::vector<std::string> summary;
 };
 
 /// Fills the draft from a tunable source (call once, and after every restart).
@@ -99,9 +102,11 @@ struct OutlinerState {
 };
 /// The items by name and category, filtered by the search; click to trace one.
 void itemsContents(const Source& source, OutlinerState& state, Actions& actions);
-/// Every failure found, per panel (mover): frame, item, what happened; a click goes there.
+/// Every failure found, per panel (mover): frame, item, what happened; a click goes there. The
+/// row `shown` (the failure last gone to) is marked, and scrolled to once when `reveal` is set
+/// (cleared here).
 void failuresContents(std::span<Source* const> panels, const FailureList& failures,
-                      Actions& actions);
+                      std::optional<std::size_t> shown, bool& reveal, Actions& actions);
 /// Tunnelled so far and the scene's other counters, candidates and cells per move.
 void countersContents(const SimSource& source);
 /// Name, mover, frame and call, and paused, on one line; the timing and zoom on a second; a

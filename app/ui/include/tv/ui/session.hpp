@@ -77,6 +77,11 @@ class Session {
   void trace(std::optional<ItemId> item);
   [[nodiscard]] std::optional<ItemId> traced() const { return primary().traced(); }
 
+  /// Shows failure `f` in every panel: its frame, its item traced, the failing call selected (a
+  /// recording's own call; a scene's, that item's move in the tick). What every "go" to a
+  /// failure does to the session. Throws what goTo and trace throw.
+  void showFailure(const Failure& f);
+
   /// The world rect that frames every panel's traced move.
   [[nodiscard]] Rect followView() const;
 

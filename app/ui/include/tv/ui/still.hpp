@@ -1,9 +1,10 @@
 #pragma once
 /// A still: the debugger's picture of a source at a moment — a scene (or level) at a tick, with
-/// one mover or several compared, or a recording at a frame and call — as tv-render draws it
-/// and as tv-debugger's screenshot mode draws it, from the same flags. Sharing this one
-/// composition (the session and the view) is what lets a test demand that both programs give
-/// the same pixels.
+/// one mover or several compared, or a recording at a frame and call, alone or beside a what-if
+/// re-run — as tv-render draws it and as tv-debugger's screenshot mode draws it, from the same
+/// flags. Sharing this one composition (the session and the view) is what lets a test demand
+/// that both programs give the same pixels. With --first-failure the moment is the run's first
+/// failure, found by the debugger's own checks: what a game's CI keeps as the picture of it.
 
 #include <cstdint>
 #include <memory>
@@ -29,20 +30,33 @@ struct RecordingFlags {
   std::uint64_t frame = 0;            ///< --frame N
   std::optional<std::string> item;    ///< --item LABEL: the item traced
   std::optional<std::uint32_t> call;  ///< --call K: the call of the frame selected
-  std::optional<MoverSpec> whatIf;    ///< --what-if MOVER: re-run beside it (tv-debugger)
+  std::optional<MoverSpec> whatIf;    ///< --what-if MOVER: re-run beside the recorded run
   bool updatesAsMoves = false;        ///< --updates-as-moves: for the what-if run
+  /// "--frame" or "--call" when either was given (--first-failure picks both), else empty.
+  std::string placedBy;
+};
+
+/// --first-failure found nothing to show: nothing in the run failed. Not an error: the programs
+/// say so and write no image.
+struct NoFailure {
+  std::string message;
 };
 
 /// Takes --open, --frame, --item, --call, --what-if and --updates-as-moves (and, with
 /// `positional`, a lone argument ending in .tvrec) out of argv; the other arguments go to `rest`,
 /// argv[0] first. Returns the flags when a recording was named; UsageError for a flag without
-/// its value, or --frame/--item/--call without a recording.
+/// its value, --frame/--item/--call/--what-if without a recording, or --updates-as-moves
+/// without --what-if.
 [[nodiscard]] std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv,
                                                                   bool positional,
                                                                   std::vector<char*>& rest);
 /// UsageError naming the first flag of `o` that picks a built-in scene (--scene, --mover,
 /// --tick, a scene parameter...), which a recording does not take.
 void rejectSceneFlags(const PictureOptions& o);
+
+/// UsageError when --first-failure comes with a flag that places the picture itself (--tick,
+/// --ticks, --frame, --call): the first failure picks the moment.
+void checkFirstFailure(const PictureOptions& o, const std::optional<RecordingFlags>& r);
 
 /// The registered scene `o.scene` or the file's; UsageError listing the valid names otherwise.
 [[nodiscard]] const sim::SceneDef& sceneFor(const PictureOptions& o);
@@ -63,13 +77,16 @@ void showRecorded(Session& session, const RecordingFlags& r);
 
 class Still {
  public:
-  /// A scene's picture (`o`), or a recording's when `r` is given. Throws UsageError naming the
-  /// flag, or tv::Error for a file that does not open.
+  /// A scene's picture (`o`), or a recording's when `r` is given (with a what-if re-run beside
+  /// it for --what-if). With --first-failure, or a what-if run, the run's checks run to the end
+  /// first and fill the Failures tab; --first-failure then shows the earliest. Throws
+  /// UsageError naming the flag, tv::Error for a file that does not open, NoFailure when
+  /// --first-failure finds none.
   explicit Still(const PictureOptions& o, const std::optional<RecordingFlags>& r = {});
   ~Still();
 
   /// Every panel runs to `tick` (at `o.renderHz`); UsageError when it cannot. A recording's
-  /// frame is chosen by its flags.
+  /// frame is chosen by its flags, a first failure's by the failure: then this does nothing.
   void advanceTo(std::uint64_t tick);
   /// Fresh per-image state (camera, overlays, title) for the current tick: call once per
   /// image, before its frames.
@@ -79,12 +96,21 @@ class Still {
 
   [[nodiscard]] Session& session() { return *session_; }
   [[nodiscard]] bool recording() const { return recorded_.has_value(); }
+  /// The failure shown (--first-failure): its index in the failures found.
+  [[nodiscard]] std::optional<std::size_t> failureShown() const { return shown_; }
+  /// The failures the checks found (empty unless --first-failure or a what-if run asked).
+  [[nodiscard]] const FailureList& failures() const { return failures_; }
 
  private:
+  void findFailures();
+
   PictureOptions o_;
   std::optional<RecordingFlags> recorded_;
   std::unique_ptr<Session> session_;
   ViewState view_;
+  bool checked_ = false;  // the checks ran: failures_ is the run's whole list
+  FailureList failures_;
+  std::optional<std::size_t> shown_;
 };
 
 }  // namespace tv::ui

@@ -26,7 +26,10 @@ struct ViewState {
   OutlinerState items;
   bool revealCall = false;            ///< scroll the calls to the selected one once
   std::string caption;                ///< a line under a comparison's title (a still's)
-  FailureList failures;               ///< filled by the debugger
+  FailureList failures;               ///< filled by the debugger (a still: by its checks)
+  /// The failure last gone to (its row is marked in the Failures tab), and scroll to it once.
+  std::optional<std::size_t> shownFailure;
+  bool revealFailure = false;
   /// Where the column's tabs were drawn in the last frame (screen px): a window that must not
   /// hide the world or the controls (Help on the first run) goes over them.
   ImVec2 tabsPos{0, 0}, tabsSize{0, 0};
@@ -41,6 +44,15 @@ void syncPanels(ViewState& view, const Session& session);
 /// move. Returns the item clicked, if any.
 std::optional<ItemId> worldView(const char* id, Source& source, DebuggerState& state, ImVec2 size,
                                 const FailureList* failures = nullptr, std::size_t panel = 0);
+
+/// The earliest failure of `list`, whichever panel it is in (the list is by panel), if any.
+[[nodiscard]] std::optional<std::size_t> firstFailureIndex(const FailureList& list);
+
+/// What every "go" to failure `index` of `view.failures` does, in the debugger and in a still:
+/// the session at the failure (Session::showFailure), the failing panel inspected, every panel
+/// framed on the failing move, its row marked in the Failures tab. Throws what the session
+/// throws; an index out of range changes nothing.
+void goToFailure(Session& session, ViewState& view, std::size_t index);
 
 /// The whole view in the screen rect at `origin` of `size`. Returns what was asked.
 Actions sessionView(Session& session, ViewState& view, ImVec2 origin, ImVec2 size);

@@ -33,9 +33,10 @@ struct JumpScript {
   double speed = 0.0;       ///< px/s upwards at take-off; 0: enough to clear 3.5 tiles
 };
 
+/// One moving body of a level: the simulation's body and how the level's rules steer it.
 struct LevelBody {
   sim::Body body;  ///< rect, velocity, response, role, layer, mask, group, state, falls, active
-  Motion motion = Motion::fly;
+  Motion motion = Motion::fly;  ///< how it moves (default: keeps its velocity)
   /// px/s, walkers and players; nullopt: the scene's `speed` parameter.
   std::optional<double> speed;
   bool facingLeft = false;  ///< walkers and players: start walking left
@@ -43,6 +44,7 @@ struct LevelBody {
   std::string name;         ///< what the tools call it (a map object's name); empty: "body N"
 };
 
+/// A level as loaded from a file (parseTiledMap, parseSceneFile...), before it is a scene.
 struct Level {
   std::string name;            ///< shown in the tools (the file's stem unless the file names it)
   std::string description;     ///< one line
@@ -54,15 +56,15 @@ struct Level {
   Vec2 gravity;                ///< px/s², for bodies that fall
   std::optional<Rect> camera;  ///< what to frame; nullopt: everything in the level
   std::optional<std::string> mover;  ///< the mover the file suggests, if any
-  std::vector<sim::Solid> solids;
+  std::vector<sim::Solid> solids;  ///< static solids, added to the world first, in order
   /// What the tools call each solid (a map object's name), by index; missing or empty:
   /// unnamed ("tile 12").
   std::vector<std::string> solidNames;
-  std::vector<LevelBody> bodies;
+  std::vector<LevelBody> bodies;  ///< moving bodies, added after the solids, in order
   /// A built-in scene whose rules steer and count (a file exported by tv-run --export-scene),
   /// and the values of all its parameters; empty: the level's own rules (the motions above).
   std::string rules;
-  std::vector<std::pair<std::string, double>> params;
+  std::vector<std::pair<std::string, double>> params;  ///< name and value, with `rules` only
   /// What the loader wants the user to know (e.g. "nothing is collidable"); never errors.
   std::vector<std::string> notes;
 };

@@ -21,6 +21,8 @@
 
 namespace tv::level {
 
+/// What a Tiled map cannot say for itself: layers to treat as solid, and how to read the
+/// external tilesets it names.
 struct TiledOptions {
   /// Layers (by name) all of whose tiles and objects are solid, whatever their properties say.
   std::vector<std::string> solidLayers;

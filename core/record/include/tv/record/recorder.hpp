@@ -29,12 +29,16 @@
 
 namespace tv {
 
+/// How a Recorder writes.
 struct RecorderOptions {
   /// Frames between keyframes (whole-world snapshots), so that seeking costs at most this many
   /// frames of replay. Range [1, 2^20]; default 64.
   std::uint32_t keyframeEvery = 64;
 };
 
+/// Writes everything a game asks of the World it is attached to, with the results, into a
+/// `.tvrec` file (or memory), one chunk per frame. See the file's overview for the five lines a
+/// game adds.
 class Recorder final : public WorldObserver {
  public:
   /// Creates (or truncates) `path` and writes the header. Throws tv::Error naming the path and
@@ -60,17 +64,20 @@ class Recorder final : public WorldObserver {
   /// FixedStep it was attached to. The recorder records nothing after it.
   void close();
 
+  /// False once writing failed (disk full...): the recording stopped there, the game goes on.
   [[nodiscard]] bool ok() const { return error_.empty(); }
+  /// Why writing failed, naming the file and the system's reason; empty while ok().
   [[nodiscard]] const std::string& error() const { return error_; }
-  [[nodiscard]] std::uint64_t frames() const { return frames_; }
-  [[nodiscard]] std::uint64_t calls() const { return calls_; }
+  [[nodiscard]] std::uint64_t frames() const { return frames_; }  ///< frames ended so far
+  [[nodiscard]] std::uint64_t calls() const { return calls_; }    ///< calls recorded so far
+  /// Moves recorded so far (World::move, check, project, Mover::move; a Batch::step's bodies).
   [[nodiscard]] std::uint64_t moves() const { return moves_; }
   /// Bytes written so far (file size once closed).
   [[nodiscard]] std::uint64_t size() const { return size_; }
   /// The whole recording, for a recorder made without a path.
   [[nodiscard]] const std::vector<std::uint8_t>& bytes() const { return memory_; }
 
-  // WorldObserver
+  // WorldObserver: what the world reports, recorded (documented there)
   void attached(const World& world) override;
   void detached(const World& world) override;
   void added(ItemId id, const Rect& r) override;

@@ -25,17 +25,19 @@
 
 namespace tv {
 
-/// What a recorded call was.
+/// What a recorded call was: a World call (add ... anyOverlap, addResponse), a Mover::move, a
+/// Batch::step, a Recorder::label or a FixedStep advance (a frame's start).
 enum class CallKind : std::uint8_t {
   add, remove, update, move, check, project, queryRect, queryPoint, querySegment, anyOverlap,
   addResponse, moverMove, batchStep, label, advance,
 };
+/// The call kind as the tools print it: "move", "queryRect", "moverMove"...
 [[nodiscard]] std::string_view callKindName(CallKind k);
 
 /// One recorded call, as listed in the debugger's frame view.
 struct CallInfo {
-  CallKind kind = CallKind::move;
-  std::uint64_t frame = 0;
+  CallKind kind = CallKind::move;  ///< what the call was
+  std::uint64_t frame = 0;         ///< the frame it was made in (0-based)
   std::uint32_t index = 0;   ///< within its frame
   ItemId item;               ///< the item it concerns (invalid for project and the queries)
   std::uint64_t offset = 0;  ///< byte offset of its record in the file
@@ -49,28 +51,35 @@ struct CallInfo {
 
 /// An item that appears in the recording, for the outliner.
 struct RecordedItem {
-  ItemId id;
+  ItemId id;             ///< its id in the recorded world (and in the replay's)
   std::string label;     ///< the game's label, or "item <index>.<generation>"
   std::string category;  ///< the game's category, or empty
-  std::uint64_t firstFrame = 0, lastFrame = 0;
-  std::uint64_t moves = 0, hits = 0;
+  /// @name The frames it is in the world (first added .. last seen)
+  /// @{
+  std::uint64_t firstFrame = 0, lastFrame = 0;  ///< frames, 0-based, inclusive
+  /// @}
+  /// @name Its recorded moves, and the collisions they had
+  /// @{
+  std::uint64_t moves = 0, hits = 0;  ///< counts over the whole recording
+  /// @}
   double maxSpeed = 0.0;  ///< longest single move, in world units
   std::uint64_t endedOverlapping = 0;  ///< moves that ended overlapping a solid (not ignored)
 };
 
 /// The first call whose result differs from the recording.
 struct Divergence {
-  std::uint64_t frame = 0;
-  std::uint32_t call = 0;
-  CallKind kind = CallKind::move;
+  std::uint64_t frame = 0;         ///< the frame of the call (0-based)
+  std::uint32_t call = 0;          ///< the call's index within its frame
+  CallKind kind = CallKind::move;  ///< what the call was
   std::string item;      ///< label of the item concerned
   std::string what;      ///< "position", "collision 1 ti", "queryRect result"...
   std::string expected;  ///< as recorded
   std::string got;       ///< as replayed
-  std::uint64_t offset = 0;
+  std::uint64_t offset = 0;  ///< byte offset of the call's record in the file
   [[nodiscard]] std::string report() const;  ///< the whole thing on a few lines
 };
 
+/// How a recording is replayed: exactly (the default), or a what-if under another mover.
 struct ReplayOptions {
   /// What-if: every recorded move (World::move and Mover::move) is made by this mover instead.
   std::optional<MoverSpec> mover;
@@ -91,65 +100,111 @@ struct ReplayOptions {
 
 /// Totals over the whole recording, known once it is open.
 struct ReplaySummary {
-  std::uint64_t frames = 0, calls = 0, moves = 0, collisions = 0, queries = 0, keyframes = 0;
+  /// @name Counts over the frames read
+  /// @{
+  std::uint64_t frames = 0, calls = 0, moves = 0, collisions = 0, queries = 0,
+                keyframes = 0;  ///< counts
+  /// @}
   std::uint64_t bytes = 0;  ///< file size
   /// Bytes of whole frames read (header included): less than `bytes` when the file is damaged.
   std::uint64_t bytesRead = 0;
   /// Where a cut or damaged file stopped being read: frames after it are not in the replay.
   std::optional<std::uint64_t> damagedAt;
+  /// True when the file ends with its end mark: the game closed the recording. A game that
+  /// crashed or was killed leaves whole frames and no end mark (or a frame cut short).
+  bool closed = false;
 };
 
 /// A move whose what-if outcome differs from the recorded one.
 struct MoveDifference {
-  std::uint64_t frame = 0;
-  std::uint32_t call = 0;
-  ItemId item;
-  Vec2 recorded, got;  ///< where each run ended
-  double distance = 0.0;
+  std::uint64_t frame = 0;  ///< the frame of the move (0-based)
+  std::uint32_t call = 0;   ///< the move's call index within its frame
+  ItemId item;              ///< the item moved
+  /// @name Where the recorded run and the re-run ended
+  /// @{
+  Vec2 recorded, got;  ///< positions (top-left), world units
+  /// @}
+  double distance = 0.0;  ///< between the two ends, world units (> 0)
   bool tunnelled = false;    ///< passed through a solid the recorded filter does not ignore
   bool overlapping = false;  ///< ended overlapping such a solid
+  /// The solid it passed through (tunnelled), else the one it ended inside; invalid for a move
+  /// that only ended elsewhere.
+  ItemId solid;
 };
 
+/// What a what-if run (Replay::whatIf) found, against the recorded run.
 struct WhatIfReport {
-  std::uint64_t moves = 0;
+  std::uint64_t moves = 0;  ///< moves re-run (with updatesAsMoves, updates made moves included)
   std::vector<MoveDifference> differences;  ///< every move that ended elsewhere, in order
-  std::optional<std::uint64_t> firstDifferentFrame;
+  std::optional<std::uint64_t> firstDifferentFrame;  ///< the first frame where the runs differ
   /// First frame where a re-run body is more than `farAway` from where the recording goes on:
   /// from there the recorded goals (the game's reactions) no longer make sense.
   std::optional<std::uint64_t> firstImplausibleFrame;
-  std::uint64_t tunnelled = 0, overlapping = 0;
-  /// The same two checks on the recorded run itself (its moves, and with updatesAsMoves its
-  /// updates): what the what-if run is compared against.
-  std::uint64_t recordedTunnelled = 0, recordedOverlapping = 0;
+  /// @name The re-run's moves that tunnelled, and that ended inside a solid
+  /// Counted in moves, not bodies: a bullet that passes a wall in one move and a tile beyond it
+  /// in a later one counts twice. Tunnelled: the move's start and end lie on opposite sides of
+  /// an item its recorded filter neither ignores nor crosses; inside a solid: it ended
+  /// overlapping such an item it did not overlap at its start. Where the filter was never asked
+  /// (an update made a move), the item's most common recorded answer stands in, or with none,
+  /// items that move somewhere in the recording are ignored and the others are solid.
+  /// @{
+  std::uint64_t tunnelled = 0, overlapping = 0;  ///< counts of moves
+  /// @}
+  /// @name The same two checks on the recorded run itself
+  /// Its moves, and with updatesAsMoves its updates: what the what-if run is compared against.
+  /// A game that moves bodies itself (x += v*dt, update, push out) updates them into solids
+  /// before pushing them out, so each such update counts as ending inside a solid.
+  /// @{
+  std::uint64_t recordedTunnelled = 0, recordedOverlapping = 0;  ///< counts of moves
+  /// @}
+  /// The recorded run's moves behind those two counts, in order (`recorded` and `got` are both
+  /// where the move ended; `distance` is 0).
+  std::vector<MoveDifference> recordedFailures;
   /// Calls the what-if world refused (e.g. a pixel move over 2^24 px); they changed nothing.
   std::uint64_t failedCalls = 0;
 };
 
+/// A recording opened for replay: what is in it, a world at any frame and call, a call-by-call
+/// step with traces, and whole-file validation and what-if runs.
+///
+///     tv::Replay r = tv::Replay::open("game.tvrec");   // tv::Error naming the byte if bad
+///     if (auto d = r.validate()) std::cerr << d->report();
+///     r.seek(62, 2);                                    // just before call 2 of frame 62
+///     tv::MoveTrace t;
+///     r.step(&t);                                       // that call, traced
 class Replay {
  public:
+  /// `seek`'s call index for "after the frame's last call".
   static constexpr std::uint32_t kEndOfFrame = 0xFFFFFFFFu;
 
-  /// Reads and indexes a recording (header, frame chunks with checksums, keyframes).
+  /// Reads and indexes a recording (header, frame chunks with checksums, keyframes). Throws
+  /// tv::Error naming the file and the system's reason when it cannot be read, and the byte
+  /// offset, the frame and what is wrong when its contents are bad (a cut file is not an error:
+  /// it replays up to its last whole frame, with a warning).
   [[nodiscard]] static Replay open(const std::string& path, ReplayOptions options = {});
+  /// As `open`, from the bytes of a recording in memory (Recorder::bytes()).
   [[nodiscard]] static Replay fromBytes(std::vector<std::uint8_t> bytes,
                                         ReplayOptions options = {});
-  Replay(Replay&&) noexcept;
-  Replay& operator=(Replay&&) noexcept;
+  Replay(Replay&&) noexcept;             ///< moves the whole replay (no copy: it owns a world)
+  Replay& operator=(Replay&&) noexcept;  ///< moves the whole replay
   ~Replay();
 
   // -- what is in it ---------------------------------------------------------------------------
-  [[nodiscard]] std::uint64_t frames() const;
-  [[nodiscard]] double cellSize() const;
-  [[nodiscard]] std::uint64_t fileSize() const;
+  [[nodiscard]] std::uint64_t frames() const;  ///< whole frames read (the summary's `frames`)
+  [[nodiscard]] double cellSize() const;       ///< the recorded world's cell size, world units
+  [[nodiscard]] std::uint64_t fileSize() const;  ///< bytes
+  /// What was wrong but tolerated: a cut file, no end mark, bytes after the end mark...
   [[nodiscard]] std::span<const std::string> warnings() const;
+  /// Every item that appears in the recording, in the order first seen.
   [[nodiscard]] std::span<const RecordedItem> items() const;
   /// The label of an item ("player"), or "item <index>.<generation>" when it has none.
   [[nodiscard]] std::string label(ItemId id) const;
+  /// The category the game gave an item ("bullet"), or empty.
   [[nodiscard]] std::string category(ItemId id) const;
   /// The calls recorded in a frame, in order.
   [[nodiscard]] std::vector<CallInfo> calls(std::uint64_t frame) const;
-  [[nodiscard]] const ReplayOptions& options() const;
-  [[nodiscard]] const ReplaySummary& summary() const;
+  [[nodiscard]] const ReplayOptions& options() const;  ///< as given to open
+  [[nodiscard]] const ReplaySummary& summary() const;  ///< totals, known once open
   /// Calls recorded in a frame (labels and FixedStep advances included).
   [[nodiscard]] std::uint32_t callCount(std::uint64_t frame) const;
 
@@ -157,8 +212,9 @@ class Replay {
   /// Puts the world just before call `call` of `frame` (kEndOfFrame: after the frame's last
   /// call). Starts from the nearest keyframe at or before it: O(keyframe interval).
   void seek(std::uint64_t frame, std::uint32_t call = kEndOfFrame);
-  [[nodiscard]] std::uint64_t frame() const;
+  [[nodiscard]] std::uint64_t frame() const;  ///< the frame the replay stands in
   [[nodiscard]] std::uint32_t call() const;  ///< index of the next call in frame()
+  /// The replayed world as it stands (read only: the replay owns it).
   [[nodiscard]] const World& world() const;
   /// True once the last call of the last frame has been stepped.
   [[nodiscard]] bool atEnd() const;
@@ -173,7 +229,7 @@ class Replay {
   /// return false to cancel (then the result is empty and `cancelled()` true).
   [[nodiscard]] std::optional<Divergence> validate(
       const std::function<bool(std::uint64_t)>& progress = {});
-  [[nodiscard]] bool cancelled() const;
+  [[nodiscard]] bool cancelled() const;  ///< the last validate() was cancelled by its progress
   /// What-if (options().mover set): the whole run against the recording.
   [[nodiscard]] WhatIfReport whatIf(double farAway = 64.0);
 

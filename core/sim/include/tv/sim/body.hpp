@@ -17,17 +17,18 @@ enum class BodyRole : std::uint8_t { projectile, enemy, ball, walker, player, cr
 
 /// Collision layers: a body meets what its `mask` shares a bit with (solids are `kLayerSolid`).
 inline constexpr std::uint32_t kLayerSolid = 1u << 0;
-inline constexpr std::uint32_t kLayerProjectile = 1u << 1;
-inline constexpr std::uint32_t kLayerEnemy = 1u << 2;
-inline constexpr std::uint32_t kLayerCrowd = 1u << 3;
-inline constexpr std::uint32_t kLayerPlayer = 1u << 4;
+inline constexpr std::uint32_t kLayerProjectile = 1u << 1;  ///< bullets and shots
+inline constexpr std::uint32_t kLayerEnemy = 1u << 2;       ///< what projectiles are aimed at
+inline constexpr std::uint32_t kLayerCrowd = 1u << 3;       ///< crowd movers (among each other)
+inline constexpr std::uint32_t kLayerPlayer = 1u << 4;      ///< players and walkers
 
+/// A moving body: its item in the world, its velocity and the little state the rules keep.
 struct Body {
   ItemId item;    ///< its item in the simulation's world (set when the scene is built)
   Rect rect;      ///< where it is (always equal to the world's rect for `item`)
   Vec2 velocity;  ///< px/s
   ResponseId response = response::slide;  ///< how it responds to whatever it meets
-  BodyRole role = BodyRole::block;
+  BodyRole role = BodyRole::block;   ///< what it is, for the debugger's colours
   std::uint32_t layer = 0;           ///< what it is (one kLayer* bit)
   std::uint32_t mask = kLayerSolid;  ///< what it collides with
   std::uint32_t group = 0;           ///< scene-defined, constant: lane, slot, pair...
@@ -55,6 +56,7 @@ struct Counters {
   std::uint64_t landings = 0;     ///< platformer: landings after a jump or fall
   std::uint64_t respawns = 0;     ///< platformer: falls out of the level
 
+  /// Equal when every counter is.
   friend bool operator==(const Counters&, const Counters&) = default;
 };
 

@@ -53,9 +53,12 @@ class Params {
   [[nodiscard]] std::int64_t getInt(std::string_view name) const;
   /// Sets `name` to `value` after checking it (finite, in range, whole if integer).
   void set(std::string_view name, double value);
+  /// True when the scene has a parameter of that name.
   [[nodiscard]] bool has(std::string_view name) const;
 
+  /// The declarations (name, range, default...), in declaration order.
   [[nodiscard]] std::span<const ParamSpec> specs() const { return specs_; }
+  /// The current values, in the same order as specs().
   [[nodiscard]] std::span<const double> values() const { return values_; }
   /// Names in declaration order.
   [[nodiscard]] std::vector<std::string_view> names() const;

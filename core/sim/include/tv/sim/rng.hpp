@@ -1,5 +1,5 @@
 #pragma once
-/// SplitMix64: the same numbers on every platform and standard library (the <random>
+/// SplitMix64: the same numbers on every platform and standard library (the `<random>`
 /// distributions are implementation-defined, so they could not back golden hashes or the
 /// benchmarks' seeded workloads).
 
@@ -8,9 +8,12 @@
 
 namespace tv::sim {
 
+/// A seeded SplitMix64 generator: the scenes' and benchmarks' only source of randomness.
 class Rng {
  public:
+  /// Any seed; equal seeds give equal sequences everywhere.
   explicit Rng(std::uint64_t seed) : s_(seed) {}
+  /// The next 64 uniformly distributed bits.
   std::uint64_t next() {
     std::uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;

@@ -29,8 +29,8 @@ namespace tv::sim {
 
 /// A solid of the scene (a tile, a wall piece). `tag` is scene-defined (e.g. floor vs wall).
 struct Solid {
-  Rect rect;
-  std::uint8_t tag = 0;
+  Rect rect;             ///< where it is, px
+  std::uint8_t tag = 0;  ///< scene-defined kind (0 by default)
 };
 
 class SceneRules;
@@ -42,16 +42,18 @@ struct SceneSetup {
   std::vector<Body> bodies;   ///< then these (their `item` is filled in by the simulation)
   Vec2 gravity;               ///< px/s², applied to bodies with `falls`
   std::shared_ptr<const SceneRules> rules;  ///< null: plain movement, nothing counted
-  /// What the tools call each solid and body (a map object's name), by index; empty or missing
-  /// entries are unnamed ("wall tile 12", "body 3").
-  std::vector<std::string> solidNames, bodyNames;
+  /// What the tools call each solid (a map object's name), by index; empty or missing entries
+  /// are unnamed ("wall tile 12").
+  std::vector<std::string> solidNames;
+  /// What the tools call each body, by index, as `solidNames`; unnamed: "body 3".
+  std::vector<std::string> bodyNames;
 };
 
 /// What the rules may see and change during a tick.
 struct TickContext {
-  std::span<Body> bodies;
-  Counters& counters;
-  const World& world;
+  std::span<Body> bodies;  ///< every body, in the scene's order (the rules may change them)
+  Counters& counters;      ///< what the scene counts (the rules add to them)
+  const World& world;      ///< the world after this tick's moves
   std::uint64_t tick = 0;                    ///< the tick being run: 0 for the first
   double dt = 0.0;                           ///< its length, s
   std::span<const Vec2> previous;            ///< every body's position before this tick
@@ -98,7 +100,7 @@ struct SceneDef {
   /// that should have met did not), false when it is an expected near thing (an exact graze),
   /// which the tools call `missesWord` and never count against a mover.
   bool missesFail = false;
-  std::string missesWord = "misses";
+  std::string missesWord = "misses";  ///< the tools' word for the counter ("grazes")
   /// What the tools call a solid of each tag (index = tag; "floor tile", "wall tile"); a tag
   /// past the end is a "solid".
   std::vector<std::string> tagNames;
@@ -115,6 +117,7 @@ struct SceneDef {
   [[nodiscard]] Rect defaultCamera() const { return camera(defaults()); }
 };
 
+/// A set of scenes by name (the built-in ones: builtinScenes()).
 class SceneRegistry {
  public:
   /// Registers a scene. Throws tv::Error on an empty or duplicate name, missing functions, or
@@ -126,6 +129,7 @@ class SceneRegistry {
   [[nodiscard]] const SceneDef* tryFind(std::string_view name) const;
   /// In registration order.
   [[nodiscard]] std::span<const SceneDef> all() const { return scenes_; }
+  /// Their names, in registration order.
   [[nodiscard]] std::vector<std::string_view> names() const;
 
  private:

@@ -33,6 +33,7 @@
 
 namespace tv::sim {
 
+/// How much history a Simulation keeps, and its frame clamp.
 struct SimConfig {
   /// Ticks kept for `stepBack` and `seek`, counting the current one; >= 1. Default 600
   /// (10 s at 60 Hz). Memory: about 40 bytes per body per tick.
@@ -60,7 +61,7 @@ struct TickEvent {
   /// The body whose move the rules were judging when they counted (afterMove); -1 when counted
   /// after every body moved (afterTick), which is no one body's.
   std::int64_t body = -1;
-  Counted what = Counted::tunnelled;
+  Counted what = Counted::tunnelled;  ///< which counter rose
   std::uint64_t count = 1;  ///< how much the counter rose
   /// What the move passed through (tunnelled, farPushOut) or ended inside (overlapped), as
   /// tv::judgeMove finds it with the simulation's filter; invalid when unknown or not asked.
@@ -75,6 +76,11 @@ struct TraceStats {
   std::uint64_t cells = 0;       ///< broad-phase cells over those moves
 };
 
+/// One scene run by one mover: tick it, step back, seek, hash it, trace a body.
+///
+///     tv::sim::Simulation sim("bullets-wall", "discrete");
+///     sim.run(600);
+///     std::printf("%llu tunnelled\n", (unsigned long long)sim.counters().tunnelled);
 class Simulation {
  public:
   /// Builds `scene` with `params` (which must be the scene's own, e.g. from
@@ -89,6 +95,7 @@ class Simulation {
   /// Rebuilds the scene from tick 0 with new parameters / another mover. On a throw (bad value,
   /// parameters of another scene) nothing changes: the world, bodies and ring stay as they were.
   void restart(const Params& params);
+  /// As `restart(params)`, with another mover too.
   void restart(const Params& params, MoverSpec mover);
   /// From tick 0 with the same parameters and mover.
   void restart();
@@ -113,7 +120,9 @@ class Simulation {
   /// Body `i` between its previous and current positions at `alpha()` (after a seek, the
   /// restored position).
   [[nodiscard]] Vec2 renderPosition(std::size_t i) const;
+  /// Body `i`'s rect at its render position.
   [[nodiscard]] Rect renderRect(std::size_t i) const;
+  /// The accumulator `frame()` runs ticks from.
   [[nodiscard]] const FixedStep& fixedStep() const { return fixed_; }
 
   // -- time travel ---------------------------------------------------------------------------
@@ -124,11 +133,12 @@ class Simulation {
   /// snapshot at the scene's dt. Throws tv::Error naming the tick and the ring's range if `t`
   /// has already left the ring.
   void seek(std::uint64_t t);
+  /// True when the previous tick's snapshot is in the ring.
   [[nodiscard]] bool canStepBack() const { return tick_ > oldest_; }
   /// The range of ticks the ring holds (newest may be ahead of the current tick after a step
   /// back; the next tick discards the snapshots ahead).
   [[nodiscard]] std::uint64_t oldestTick() const { return oldest_; }
-  [[nodiscard]] std::uint64_t newestTick() const { return newest_; }
+  [[nodiscard]] std::uint64_t newestTick() const { return newest_; }  ///< see oldestTick()
 
   // -- state ---------------------------------------------------------------------------------
   /// Ticks run since tick 0 (the current tick's number).
@@ -136,23 +146,25 @@ class Simulation {
   /// Hash of the tick number, every body's position, velocity, state and activity (as bits),
   /// and every counter. Deterministic across runs, instances and render rates.
   [[nodiscard]] std::uint64_t stateHash() const;
-  [[nodiscard]] const Counters& counters() const { return counters_; }
-  [[nodiscard]] std::span<const Body> bodies() const { return bodies_; }
-  [[nodiscard]] std::span<const Solid> solids() const { return solids_; }
-  [[nodiscard]] const World& world() const { return world_; }
-  [[nodiscard]] const SceneDef& scene() const { return scene_; }
-  [[nodiscard]] const Params& params() const { return params_; }
+  [[nodiscard]] const Counters& counters() const { return counters_; }  ///< what was counted
+  [[nodiscard]] std::span<const Body> bodies() const { return bodies_; }  ///< scene order
+  [[nodiscard]] std::span<const Solid> solids() const { return solids_; }  ///< scene order
+  [[nodiscard]] const World& world() const { return world_; }  ///< the world the bodies move in
+  [[nodiscard]] const SceneDef& scene() const { return scene_; }  ///< the scene it runs
+  [[nodiscard]] const Params& params() const { return params_; }  ///< its parameters
   /// The mover's spec as used (maxStep resolved).
   [[nodiscard]] const MoverSpec& moverSpec() const { return mover_.spec(); }
-  [[nodiscard]] Vec2 gravity() const { return gravity_; }
+  [[nodiscard]] Vec2 gravity() const { return gravity_; }  ///< px/s²
   /// The scene's fixed step, s.
   [[nodiscard]] double dt() const { return dt_; }
+  /// What the tools frame, at the current parameters.
   [[nodiscard]] Rect camera() const { return scene_.camera(params_); }
   /// What the tools call solid `i` and body `i`: the scene's own name for it (a map object's),
   /// else empty.
   [[nodiscard]] std::string_view solidName(std::size_t i) const {
     return i < solidNames_.size() ? std::string_view(solidNames_[i]) : std::string_view();
   }
+  /// What the tools call body `i`, as solidName.
   [[nodiscard]] std::string_view bodyName(std::size_t i) const {
     return i < bodyNames_.size() ? std::string_view(bodyNames_[i]) : std::string_view();
   }
@@ -163,9 +175,10 @@ class Simulation {
   /// Records a MoveTrace of body `i`'s move every tick (nullopt: off, the default). Tracing
   /// never changes results; batched scenes record nothing (tv::Batch has no trace).
   void traceBody(std::optional<std::size_t> i);
-  [[nodiscard]] std::optional<std::size_t> tracedBody() const { return traced_; }
+  [[nodiscard]] std::optional<std::size_t> tracedBody() const { return traced_; }  ///< or none
   /// The traced body's move in the last tick, or null (off, inactive, batched, after a seek).
   [[nodiscard]] const MoveTrace* lastTrace() const { return traceValid_ ? &trace_ : nullptr; }
+  /// Totals over every traced move since the last restart.
   [[nodiscard]] const TraceStats& traceStats() const { return traceStats_; }
 
   // -- what was counted ----------------------------------------------------------------------
@@ -174,6 +187,7 @@ class Simulation {
   [[nodiscard]] std::span<const TickEvent> events() const { return events_; }
   /// Moves reporting more collisions than `n` are listed in events() (0, the default: none).
   void setManyCollisions(std::size_t n) { manyCollisions_ = n; }
+  /// The threshold setManyCollisions set (0: off).
   [[nodiscard]] std::size_t manyCollisions() const { return manyCollisions_; }
 
  private:

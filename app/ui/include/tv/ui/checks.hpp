@@ -1,13 +1,15 @@
 #pragma once
-// What the debugger learns about the whole run beside the view, whatever the source: how far it
-// goes, where the panels first part ways, the first failure, every failure (the Failures tab),
-// and where a recording diverges from what it recorded.
-//
-// A scene's panels: untraced copies of their simulations run ahead of the view in lockstep, a
-// few milliseconds per frame, recording every tick's state hash and what the rules counted, body
-// by body. A recording: validation, and each what-if panel's run under its mover, in threads
-// beside the view. Screenshots run everything to the end first, so the marks never depend on how
-// fast the machine is.
+/// What the debugger learns about the whole run beside the view, whatever the source: how far it
+/// goes, where the panels first part ways, the first failure, every failure (the Failures tab),
+/// and where a recording diverges from what it recorded. A still (tv-render, the debugger's
+/// --screenshot) asks the same checks when its picture is about failures (--first-failure, a
+/// what-if run), so both programs list the same ones.
+///
+/// A scene's panels: untraced copies of their simulations run ahead of the view in lockstep, a
+/// few milliseconds per frame, recording every tick's state hash and what the rules counted,
+/// body by body. A recording: validation, and each what-if panel's run under its mover, in
+/// threads beside the view. Screenshots and stills run everything to the end first, so the marks
+/// never depend on how fast the machine is.
 
 #include <cstdint>
 #include <memory>
@@ -15,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "recording_jobs.hpp"
 #include "tv/record/replay.hpp"
 #include "tv/sim/simulation.hpp"
 #include "tv/ui/panels.hpp"
+#include "tv/ui/recording_jobs.hpp"
 #include "tv/ui/session.hpp"
 
-namespace tv::viewer {
+namespace tv::ui {
 
 class Checks {
  public:
@@ -37,7 +39,7 @@ class Checks {
 
   /// Starts again for the session's panels (which must outlive this or the next reset). `wait`:
   /// run the threads' work in this thread (screenshots). May throw tv::Error.
-  void reset(ui::Session& session, bool wait);
+  void reset(Session& session, bool wait);
   /// Runs a scene's look-ahead for about `budgetMs` of wall time, and collects what the threads
   /// have finished.
   void advance(double budgetMs);
@@ -54,7 +56,7 @@ class Checks {
   /// What failed first there, e.g. "discrete tunnelled, substep-discrete tunnelled".
   [[nodiscard]] const std::string& failureText() const { return failureText_; }
   /// Every failure found so far, per panel.
-  [[nodiscard]] const ui::FailureList& failures() const { return list_; }
+  [[nodiscard]] const FailureList& failures() const { return list_; }
   /// A recording's validation: running, done, its divergence or why it could not run.
   [[nodiscard]] const ValidationJob* validation() const { return validation_.get(); }
   /// The first what-if panel's report, once done.
@@ -68,14 +70,14 @@ class Checks {
   void noteSceneFailures();
   void collect();
 
-  ui::Session* session_ = nullptr;
+  Session* session_ = nullptr;
   // A scene's look-ahead: one untraced copy per panel.
   std::vector<std::unique_ptr<sim::Simulation>> sims_;
   bool sceneDone_ = true;
   std::uint64_t known_ = 0;
   std::optional<std::uint64_t> difference_, failure_;
   std::string failureText_;
-  ui::FailureList list_;
+  FailureList list_;
   // A recording's jobs: validation, and one what-if run per panel after the first.
   std::unique_ptr<ValidationJob> validation_;
   std::vector<std::unique_ptr<WhatIfJob>> whatIfs_;
@@ -85,4 +87,4 @@ class Checks {
   std::string error_;
 };
 
-}  // namespace tv::viewer
+}  // namespace tv::ui

@@ -1,10 +1,10 @@
-#include "recording_jobs.hpp"
+#include "tv/ui/recording_jobs.hpp"
 
 #include <exception>
 
 #include "tv/app/user_message.hpp"
 
-namespace tv::viewer {
+namespace tv::ui {
 
 // -- validation --------------------------------------------------------------------------------
 
@@ -20,13 +20,13 @@ void ValidationJob::stop() {
 
 namespace {
 
-Replay openOrigin(const ui::ReplaySource::Origin& origin, const ReplayOptions& options) {
+Replay openOrigin(const ReplaySource::Origin& origin, const ReplayOptions& options) {
   return origin.bytes ? Replay::fromBytes(*origin.bytes, options) : Replay::open(origin.path, options);
 }
 
 }  // namespace
 
-void ValidationJob::start(const ui::ReplaySource::Origin& origin, bool wait) {
+void ValidationJob::start(const ReplaySource::Origin& origin, bool wait) {
   stop();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -43,7 +43,7 @@ void ValidationJob::start(const ui::ReplaySource::Origin& origin, bool wait) {
   }
 }
 
-void ValidationJob::run(const ui::ReplaySource::Origin& origin) {
+void ValidationJob::run(const ReplaySource::Origin& origin) {
   std::optional<tv::Divergence> d;
   std::string error;
   bool cancelled = false;
@@ -91,7 +91,7 @@ void WhatIfJob::join() {
   if (thread_.joinable()) thread_.join();
 }
 
-void WhatIfJob::start(const ui::ReplaySource::Origin& origin, const ReplayOptions& options,
+void WhatIfJob::start(const ReplaySource::Origin& origin, const ReplayOptions& options,
                       double farAway, bool wait) {
   join();
   {
@@ -135,4 +135,4 @@ std::string WhatIfJob::error() const {
   return error_;
 }
 
-}  // namespace tv::viewer
+}  // namespace tv::ui

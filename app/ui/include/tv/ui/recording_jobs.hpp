@@ -1,8 +1,8 @@
 #pragma once
-// Whole-recording checks that run beside the view, each on its own Replay in its own thread,
-// so playback goes on while they work: validation (the first divergence, with progress) and a
-// what-if run under another mover (the report). Screenshots run them to the end first, so the
-// marks never depend on how fast the machine is.
+/// Whole-recording checks that run beside the view, each on its own Replay in its own thread,
+/// so playback goes on while they work: validation (the first divergence, with progress) and a
+/// what-if run under another mover (the report). Screenshots run them to the end first, so the
+/// marks never depend on how fast the machine is.
 
 #include <atomic>
 #include <cstdint>
@@ -15,9 +15,8 @@
 #include "tv/record/replay.hpp"
 #include "tv/ui/replay_source.hpp"
 
-namespace tv::viewer {
+namespace tv::ui {
 
-// tv::Divergence (a replay's) is named in full: tv::viewer::Divergence is the scene look-ahead.
 class ValidationJob {
  public:
   ValidationJob() = default;
@@ -26,7 +25,7 @@ class ValidationJob {
   ValidationJob& operator=(const ValidationJob&) = delete;
 
   /// Validates the recording from the start (stops any run before). `wait`: in this thread.
-  void start(const ui::ReplaySource::Origin& origin, bool wait);
+  void start(const ReplaySource::Origin& origin, bool wait);
   void stop();
 
   [[nodiscard]] bool running() const { return running_.load(); }
@@ -39,7 +38,7 @@ class ValidationJob {
   [[nodiscard]] std::string error() const;
 
  private:
-  void run(const ui::ReplaySource::Origin& origin);
+  void run(const ReplaySource::Origin& origin);
 
   std::thread thread_;
   std::atomic<bool> running_{false}, done_{false}, cancel_{false};
@@ -57,7 +56,7 @@ class WhatIfJob {
   WhatIfJob& operator=(const WhatIfJob&) = delete;
 
   /// Re-runs the recording with `options.mover`, comparing with what it recorded.
-  void start(const ui::ReplaySource::Origin& origin, const ReplayOptions& options, double farAway,
+  void start(const ReplaySource::Origin& origin, const ReplayOptions& options, double farAway,
              bool wait);
   [[nodiscard]] bool running() const { return running_.load(); }
   [[nodiscard]] bool done() const { return done_.load(); }
@@ -75,4 +74,4 @@ class WhatIfJob {
   std::string error_;
 };
 
-}  // namespace tv::viewer
+}  // namespace tv::ui

@@ -1,15 +1,16 @@
 // What the debugger learns about the whole run beside the view.
-#include "checks.hpp"
+#include "tv/ui/checks.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <string>
 
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
 #include "tv/ui/words.hpp"
 
-namespace tv::viewer {
+namespace tv::ui {
 
 namespace {
 
@@ -38,11 +39,32 @@ const char* worse(const Counts& a, const Counts& b) {
   return nullptr;
 }
 
+// "814 moves re-run, 60 ended elsewhere; the runs differ from frame 25; from frame 31 the
+// game's goals stop making sense (a re-run body is far from where the recording goes on)".
+std::string whatIfSummary(const WhatIfReport& r) {
+  std::string s = std::to_string(r.moves) + " moves re-run, " +
+                  std::to_string(r.differences.size()) + " ended elsewhere";
+  if (r.firstDifferentFrame) {
+    s += "; the runs differ from frame " + std::to_string(*r.firstDifferentFrame);
+  } else {
+    s += "; the runs never differ";
+  }
+  if (r.firstImplausibleFrame) {
+    s += "; from frame " + std::to_string(*r.firstImplausibleFrame) +
+         " the game's goals stop making sense (a re-run body is far from where the recording "
+         "goes on)";
+  }
+  if (r.failedCalls > 0) {
+    s += "; " + std::to_string(r.failedCalls) + " calls refused by the re-run world";
+  }
+  return s;
+}
+
 }  // namespace
 
 Checks::~Checks() = default;
 
-void Checks::reset(ui::Session& session, bool wait) {
+void Checks::reset(Session& session, bool wait) {
   session_ = &session;
   sims_.clear();
   known_ = 0;
@@ -60,23 +82,23 @@ void Checks::reset(ui::Session& session, bool wait) {
 
   if (session.primary().sim()) {
     for (std::size_t k = 0; k < session.size(); ++k) {
-      const ui::SimSource* s = session.panel(k).sim();
+      const SimSource* s = session.panel(k).sim();
       if (!s) continue;
       const sim::Simulation& shown = s->simulation();
       auto copy = std::make_unique<sim::Simulation>(shown.scene(), shown.params(), shown.moverSpec());
-      copy->setManyCollisions(ui::kManyResponses);
+      copy->setManyCollisions(kManyResponses);
       sims_.push_back(std::move(copy));
     }
     sceneDone_ = sims_.empty();
     return;
   }
-  const ui::ReplaySource* recorded = session.primary().replay();
+  const ReplaySource* recorded = session.primary().replay();
   if (!recorded) return;
   // The recorded run's own failures come from validating it; each what-if panel's from its run.
   validation_ = std::make_unique<ValidationJob>();
   validation_->start(recorded->origin(), wait);
   for (std::size_t k = 1; k < session.size(); ++k) {
-    const ui::ReplaySource* r = session.panel(k).replay();
+    const ReplaySource* r = session.panel(k).replay();
     auto job = std::make_unique<WhatIfJob>();
     if (r) job->start(r->origin(), r->recording().options(), kFarAway, wait);
     whatIfs_.push_back(std::move(job));
@@ -128,10 +150,10 @@ void Checks::advance(double budgetMs) {
       s.tick();
       allFinished = allFinished && s.finished();
       // Named by the panel's source: the same scene, so the same items.
-      const ui::Source& named = session_->panel(std::min(k, session_->size() - 1));
+      const Source& named = session_->panel(std::min(k, session_->size() - 1));
       for (const sim::TickEvent& e : s.events()) {
         if (list_.entries.size() >= kMaxListed) break;
-        if (auto f = ui::failureOf(s, e, named)) list_.entries.push_back({k, std::move(*f)});
+        if (auto f = failureOf(s, e, named)) list_.entries.push_back({k, std::move(*f)});
       }
     }
     known_ = sims_.front()->ticks();
@@ -151,7 +173,7 @@ void Checks::advance(double budgetMs) {
   }
   // In frame order within each panel, the panels one after the other.
   if (list_.entries.size() != before) std::stable_sort(list_.entries.begin(), list_.entries.end(),
-                   [](const ui::FailureList::Entry& a, const ui::FailureList::Entry& b) {
+                   [](const FailureList::Entry& a, const FailureList::Entry& b) {
                      return a.panel < b.panel;
                    });
 }
@@ -162,12 +184,12 @@ void Checks::collect() {
   if (validation_ && !validationCollected_ && validation_->done()) {
     validationCollected_ = true;
     if (const auto d = validation_->divergence()) {
-      ui::Failure f;
+      Failure f;
       f.frame = d->frame;
       f.call = d->call;
-      f.kind = ui::FailureKind::diverged;
+      f.kind = FailureKind::diverged;
       f.what = "diverged: " + d->what + " recorded " + d->expected + ", replayed " + d->got;
-      if (const ui::ReplaySource* r = session_->primary().replay()) {
+      if (const ReplaySource* r = session_->primary().replay()) {
         if (const auto id = r->findLabel(d->item)) f.item = *id;
       }
       list_.entries.push_back({0, std::move(f)});
@@ -185,29 +207,36 @@ void Checks::collect() {
     const auto report = whatIfs_[k]->report();
     if (!report) continue;
     if (k == 0) whatIfReport_ = report;
+    list_.summary.resize(session_->size());
+    list_.summary[k + 1] = whatIfSummary(*report);
     for (const MoveDifference& d : report->differences) {
       if (!d.tunnelled && !d.overlapping) continue;
       if (list_.entries.size() >= kMaxListed) break;
-      ui::Failure f;
+      Failure f;
       f.frame = d.frame;
       f.call = d.call;
       f.item = d.item;
-      f.kind = d.tunnelled ? ui::FailureKind::tunnelled : ui::FailureKind::overlapping;
-      char what[160];
-      std::snprintf(what, sizeof what, "%s, %.4g from the recorded end",
-                    d.tunnelled ? "tunnelled" : "ended inside a solid", d.distance);
-      f.what = what;
+      f.kind = d.tunnelled ? FailureKind::tunnelled : FailureKind::overlapping;
+      // Named as the recording names it: "tunnelled through wall", "ended inside tile 12".
+      std::string what = d.tunnelled ? "tunnelled" : "ended inside a solid";
+      if (d.solid.valid()) {
+        what = std::string(d.tunnelled ? "tunnelled through " : "ended inside ") +
+               session_->primary().describe(d.solid);
+      }
+      char by[64];
+      std::snprintf(by, sizeof by, ", %.4g from the recorded end", d.distance);
+      f.what = what + by;
       list_.entries.push_back({k + 1, std::move(f)});
     }
   }
   if (!changed) return;
   std::stable_sort(list_.entries.begin(), list_.entries.end(),
-                   [](const ui::FailureList::Entry& a, const ui::FailureList::Entry& b) {
+                   [](const FailureList::Entry& a, const FailureList::Entry& b) {
                      return a.panel != b.panel ? a.panel < b.panel
                                                : a.failure.frame < b.failure.frame;
                    });
   list_.complete = !running();
-  const ui::ReplaySource* r = session_->primary().replay();
+  const ReplaySource* r = session_->primary().replay();
   list_.looked = r && r->frames() > 0 ? r->frames() - 1 : 0;  // the last frame looked at
   failure_.reset();
   failureText_.clear();
@@ -221,4 +250,4 @@ void Checks::collect() {
   if (whatIfReport_) difference_ = whatIfReport_->firstDifferentFrame;
 }
 
-}  // namespace tv::viewer
+}  // namespace tv::ui
