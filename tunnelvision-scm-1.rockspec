@@ -1,5 +1,6 @@
--- `luarocks make` from the repository builds and installs the native module (tunnelvision.so:
--- `require 'tunnelvision'` and `require 'tunnelvision.bump'`) for Lua 5.1 / LuaJIT.
+-- `luarocks make` from the repository builds and installs the native module for Lua 5.1 /
+-- LuaJIT: tunnelvision.so (`require 'tunnelvision'`) into the rock's lib directory and
+-- tunnelvision/bump.lua (`require 'tunnelvision.bump'`) into its Lua directory.
 rockspec_format = "3.0"
 package = "tunnelvision"
 version = "scm-1"
@@ -27,5 +28,6 @@ build = {
     TV_BUILD_TESTS = "OFF",
     TV_LUA_INCDIR = "$(LUA_INCDIR)",
     TV_LUA_INSTALL_CMOD = "$(LIBDIR)",
+    TV_LUA_INSTALL_LMOD = "$(LUADIR)",
   },
 }

@@ -10,16 +10,25 @@ set(TV_PACKAGE_NEEDS_ZLIB OFF)
 if(TARGET tv_record OR TARGET tv_level)
   set(TV_PACKAGE_NEEDS_ZLIB ON)
 endif()
+set(TV_PACKAGE_NEEDS_THREADS OFF)
+if(TARGET tv_record)
+  set(TV_PACKAGE_NEEDS_THREADS ON)  # the recorder's writer thread
+endif()
 
 # Exported names are the aliases the build tree uses: tv_core is tv::core, and so on.
 set(tv_installed tv_core tv_sim)
 set(tv_pc_libs "-ltv_sim -ltv_core")
 set(tv_pc_private "")
+set(tv_pc_libs_private "")
 set(tv_header_dirs core/include core/sim/include)
 if(TARGET tv_record)
   list(APPEND tv_installed tv_record)
   list(APPEND tv_header_dirs core/record/include)
   string(PREPEND tv_pc_libs "-ltv_record ")
+  set(tv_pc_libs_private "-pthread")  # the recorder's writer thread
+  if(WIN32)
+    string(APPEND tv_pc_libs_private " -lws2_32")  # the live stream's sockets
+  endif()
   set(tv_pc_private "zlib")  # its file checksums (CRC-32)
 endif()
 if(TARGET tv_level)

@@ -39,6 +39,8 @@ class BumpCrowd {
   void tickBatched(CrowdFilter filter);
 
   [[nodiscard]] const World& world() const { return world_; }
+  /// To attach a Recorder (tv-bench record).
+  [[nodiscard]] World& world() { return world_; }
   [[nodiscard]] std::size_t movers() const { return movers_.size(); }
   [[nodiscard]] std::size_t tiles() const { return tiles_; }
   /// The world's heap (malloc'd bytes) right after it was filled, over its items.

@@ -1,21 +1,29 @@
-// record: what recording costs and what a recording holds. The 10^4 crowd moved with and without
-// a Recorder attached (alternating runs, best of each), bytes per recorded move on the crowd and
+// record: what recording costs and what a recording holds. The 10^4 crowd and bump-crowd moved
+// with and without a Recorder attached (alternating runs, best of each; wall time and the game
+// thread's CPU time), bytes per recorded move on the crowd and
 // on the sample platformer, the replay + validate rate (tracing compiled in, off), seek time on
 // a 10^5-frame recording, and the time to open one.
 //
 // Index: [SECTION] the crowd · [SECTION] the study
 
+#include <time.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <string>
+#include <thread>
 #include <vector>
 
-#include "tv/app/platformer_game.hpp"
+#include "bump_crowd.hpp"
 #include "report.hpp"
 #include "studies.hpp"
+#include "tv/app/platformer_game.hpp"
 #include "tv/mover.hpp"
+#include "tv/record/live.hpp"
 #include "tv/record/recorder.hpp"
 #include "tv/record/replay.hpp"
 #include "tv/sim/body.hpp"
@@ -84,6 +92,13 @@ double ms(const Stopwatch& sw) {
   return sw.seconds() * 1e3;
 }
 
+// CPU time of the calling thread: what the game's own thread spent.
+double threadCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
+
 // [SECTION] the study -----------------------------------------------------------------------------
 
 }  // namespace
@@ -124,51 +139,136 @@ int runRecord(const Options& o) {
   os << "Single thread, Release; tracing compiled " << (kTraceCompiledIn ? "in (and off)" : "out")
      << ". Timings are the best of " << repeats << " alternating runs.\n\n";
 
-  // -- overhead on the crowd ------------------------------------------------------------------
-  // Two crowds in lockstep from the same seed: one detached, one recording (to memory, and to a
-  // file in --out). Runs alternate so machine noise falls on both.
-  Crowd plain(count, o.seed), memory(count, o.seed), file(count, o.seed);
+  // -- overhead on the crowds ----------------------------------------------------------------
+  // Three copies of a workload in lockstep from the same seed: one detached, one recording to
+  // memory, one to a file in --out. Runs alternate so machine noise falls on all three. Wall
+  // time is what a game on an idle machine feels; the game thread's CPU time is what recording
+  // takes from the game's own thread, whatever else the machine runs (the writer's thread works
+  // beside it).
+  Crowd plain(count, o.seed), memory(count, o.seed), file(count, o.seed), idle(count, o.seed),
+      watched(count, o.seed);
   Recorder memRec;
   const std::filesystem::path crowdPath = o.out / "crowd.tvrec";
   Recorder fileRec(crowdPath.string());
   memory.world().attach(memRec);
   file.world().attach(fileRec);
-  for (int t = 0; t < 3; ++t) {  // warm: cells and buffers reach their steady sizes
-    plain.tick();
-    memory.tick();
-    memRec.frame();
-    file.tick();
-    fileRec.frame();
+  // Live: a stream nobody listens to (a port just freed), and one to a receiver in this process.
+  LiveOptions nobody;
+  nobody.onMessage = [](std::string_view) {};
+  {
+    LiveReceiverOptions any;
+    any.address = "127.0.0.1:0";
+    nobody.address = "127.0.0.1:" + std::to_string(LiveReceiver(any).port());
   }
-  double bestPlain = 1e300, bestMemory = 1e300, bestFile = 1e300;
-  for (int r = 0; r < repeats; ++r) {
-    Stopwatch a;
-    for (std::uint64_t t = 0; t < ticks; ++t) plain.tick();
-    bestPlain = std::min(bestPlain, ms(a) / static_cast<double>(ticks));
-    Stopwatch b;
-    for (std::uint64_t t = 0; t < ticks; ++t) {
-      memory.tick();
-      memRec.frame();
+  Recorder idleRec(nobody);
+  idle.world().attach(idleRec);
+  LiveReceiverOptions rxOptions;
+  rxOptions.address = "127.0.0.1:0";
+  rxOptions.keepBytes = std::uint64_t{64} << 20;
+  LiveReceiver receiver(rxOptions);
+  LiveOptions toReceiver = nobody;
+  toReceiver.address = receiver.address();
+  Recorder watchedRec(toReceiver);
+  for (int i = 0; i < 400 && !watchedRec.liveStatus().connected; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  watched.world().attach(watchedRec);
+  BumpCrowdSpec bumpSpec;
+  bumpSpec.movers = count;
+  bumpSpec.seed = o.seed;
+  BumpCrowd bumpPlain(bumpSpec), bumpMemory(bumpSpec), bumpFile(bumpSpec), bumpIdle(bumpSpec);
+  Recorder bumpMemRec, bumpFileRec((o.out / "bump-crowd.tvrec").string()), bumpIdleRec(nobody);
+  bumpMemory.world().attach(bumpMemRec);
+  bumpFile.world().attach(bumpFileRec);
+  bumpIdle.world().attach(bumpIdleRec);
+  struct Timed {
+    bool bump;  // the bump-crowd (cheaper ticks: timed 4 times as many)
+    std::string name;
+    std::function<void()> tick;
+    double wall = 1e300, cpu = 1e300;
+  };
+  std::vector<Timed> runs = {
+      {false, "detached", [&] { plain.tick(); }},
+      {false, "recording to memory",
+       [&] {
+         memory.tick();
+         memRec.frame();
+       }},
+      {false, "recording to a file (flushed per frame)",
+       [&] {
+         file.tick();
+         fileRec.frame();
+       }},
+      {false, "live stream, nobody listening",
+       [&] {
+         idle.tick();
+         idleRec.frame();
+       }},
+      {false, "live stream to a receiver in this process",
+       [&] {
+         watched.tick();
+         watchedRec.frame();
+         (void)receiver.poll();
+       }},
+      {true, "detached", [&] { bumpPlain.tick(CrowdFilter::tiles); }},
+      {true, "recording to memory",
+       [&] {
+         bumpMemory.tick(CrowdFilter::tiles);
+         bumpMemRec.frame();
+       }},
+      {true, "recording to a file (flushed per frame)",
+       [&] {
+         bumpFile.tick(CrowdFilter::tiles);
+         bumpFileRec.frame();
+       }},
+      {true, "live stream, nobody listening",
+       [&] {
+         bumpIdle.tick(CrowdFilter::tiles);
+         bumpIdleRec.frame();
+       }},
+  };
+  for (int t = 0; t < 3; ++t) {  // warm: cells and buffers reach their steady sizes
+    for (Timed& r : runs) r.tick();
+  }
+  const std::uint64_t bumpTicks = ticks * 4;
+  for (int rep = 0; rep < repeats; ++rep) {
+    for (Timed& r : runs) {
+      const std::uint64_t n = r.bump ? bumpTicks : ticks;
+      const double cpu0 = threadCpuSeconds();
+      Stopwatch sw;
+      for (std::uint64_t t = 0; t < n; ++t) r.tick();
+      const double wall = ms(sw) / static_cast<double>(n);
+      const double cpu = (threadCpuSeconds() - cpu0) * 1e3 / static_cast<double>(n);
+      r.wall = std::min(r.wall, wall);
+      r.cpu = std::min(r.cpu, cpu);
     }
-    bestMemory = std::min(bestMemory, ms(b) / static_cast<double>(ticks));
-    Stopwatch c;
-    for (std::uint64_t t = 0; t < ticks; ++t) {
-      file.tick();
-      fileRec.frame();
-    }
-    bestFile = std::min(bestFile, ms(c) / static_cast<double>(ticks));
   }
   memory.world().detach();
   file.world().detach();
-  Table overhead({"crowd of " + std::to_string(count) + ", continuous", "ms/tick:", "overhead:"});
-  overhead.add({"detached", fixed(bestPlain, 3), "-"});
-  overhead.add(
-      {"recording to memory", fixed(bestMemory, 3), percent(bestMemory - bestPlain, bestPlain)});
-  overhead.add({"recording to a file (flushed per frame)", fixed(bestFile, 3),
-                percent(bestFile - bestPlain, bestPlain)});
-  os << "### Recording on the crowd\n\n";
+  idle.world().detach();
+  watched.world().detach();
+  bumpMemory.world().detach();
+  bumpFile.world().detach();
+  bumpIdle.world().detach();
+  Table overhead(
+      {"workload", "recording", "ms/tick:", "overhead:", "game thread CPU ms/tick:", "overhead:"});
+  for (const Timed& r : runs) {
+    const Timed& base = r.bump ? runs[5] : runs[0];
+    const std::string workload = r.bump ? "bump-crowd of " + std::to_string(count) + ", tiles"
+                                        : "crowd of " + std::to_string(count) + ", continuous";
+    const bool first = &r == &base;
+    overhead.add({workload, r.name, fixed(r.wall, 3),
+                  first ? "-" : percent(r.wall - base.wall, base.wall), fixed(r.cpu, 3),
+                  first ? "-" : percent(r.cpu - base.cpu, base.cpu)});
+  }
+  os << "### Recording on the crowds\n\n";
   overhead.printMarkdown(os);
   overhead.writeCsv(o.out, "record_overhead.csv");
+  os << "\nThe game waited for the writer "
+     << memRec.stalls() + fileRec.stalls() + bumpMemRec.stalls() + bumpFileRec.stalls()
+     << " times (its queue is bounded). The receiver kept " << receiver.window().nextFrame
+     << " frames of the watched crowd"
+     << (idleRec.calls() == 0 ? "; the stream nobody listened to copied no call" : "") << ".\n";
 
   // -- sizes ----------------------------------------------------------------------------------
   Recorder game;

@@ -12,10 +12,8 @@
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
 #include "tv/ui/still.hpp"
-#if TV_HAVE_LIVE
 #include "tv/record/live.hpp"
 #include "tv/ui/live_source.hpp"
-#endif
 
 namespace tv::viewer {
 
@@ -397,26 +395,19 @@ void Debugger::setMovers(std::vector<MoverSpec> movers) {
 
 // -- a live game ---------------------------------------------------------------------------------
 
-#if TV_HAVE_LIVE
 ui::LiveSource* Debugger::liveSource() {
   return session_ ? dynamic_cast<ui::LiveSource*>(&session_->primary()) : nullptr;
 }
 const ui::LiveSource* Debugger::liveSource() const {
   return session_ ? dynamic_cast<const ui::LiveSource*>(&session_->primary()) : nullptr;
 }
-#endif
 
 bool Debugger::live() const {
-#if TV_HAVE_LIVE
   return liveSource() != nullptr;
-#else
-  return false;
-#endif
 }
 
 void Debugger::listen(const std::string& address, std::uint64_t keepFrames,
                       std::uint64_t keepMegabytes) {
-#if TV_HAVE_LIVE
   LiveReceiverOptions o;
   o.address = address;
   o.keepFrames = keepFrames;
@@ -432,12 +423,6 @@ void Debugger::listen(const std::string& address, std::uint64_t keepFrames,
   adopt(std::make_unique<ui::Session>(std::make_unique<ui::LiveSource>(rx)), false);
   message_.clear();
   notice_ = "listening on " + listenAddress_;
-#else
-  (void)address;
-  (void)keepFrames;
-  (void)keepMegabytes;
-  fail("tv-debugger", "this build has no live streams (tv/record/live.hpp)");
-#endif
 }
 
 void Debugger::tryListen(const std::string& address) {
@@ -449,7 +434,6 @@ void Debugger::tryListen(const std::string& address) {
 }
 
 bool Debugger::saveStream(const std::string& path) {
-#if TV_HAVE_LIVE
   try {
     const ui::LiveSource* l = liveSource();
     if (!l) fail("tv-debugger", "no live game to save");
@@ -462,14 +446,9 @@ bool Debugger::saveStream(const std::string& path) {
     reportError("save: " + app::userMessage(e));
     return false;
   }
-#else
-  (void)path;
-  return false;
-#endif
 }
 
 void Debugger::refreshLive() {
-#if TV_HAVE_LIVE
   ui::LiveSource* l = liveSource();
   if (!l) return;
   const std::uint64_t run = l->run();
@@ -486,7 +465,6 @@ void Debugger::refreshLive() {
     jumpToNewest_ = jumpToNewest_ && currentTick() < l->lastFrame();
   }
   if (!paused_ && l->ended() && currentTick() >= l->lastFrame()) paused_ = true;
-#endif
 }
 
 // -- time ----------------------------------------------------------------------------------------
@@ -750,7 +728,6 @@ void Debugger::run(Command c) {
   switch (c) {
     case Command::pause: {
       notice_.clear();
-#if TV_HAVE_LIVE
       if (ui::LiveSource* l = liveSource()) {
         // Pause holds the game at its next frame, where it allows it; either way the view
         // stops following. Play lets it go on and follows the newest frame again.
@@ -764,7 +741,6 @@ void Debugger::run(Command c) {
         }
         break;
       }
-#endif
       // Play at the end plays it again, and says so, rather than pausing at once.
       if (paused_ && session_->ended() && session_->frame() >= session_->lastFrame()) {
         const std::uint64_t end = currentTick();
@@ -780,7 +756,6 @@ void Debugger::run(Command c) {
     case Command::step:
       paused_ = true;
       notice_.clear();
-#if TV_HAVE_LIVE
       if (ui::LiveSource* l = liveSource()) {
         // One more frame of the game, then held again; shown when it arrives.
         if (l->controllable()) {
@@ -791,7 +766,6 @@ void Debugger::run(Command c) {
         }
         break;
       }
-#endif
       if (isScene()) {
         // One tick forward, kept in the history as it runs.
         for (std::size_t k = 0; k < session_->size(); ++k) session_->panel(k).sim()->tick();

@@ -28,14 +28,12 @@
 #include "tv/ui/session.hpp"
 #include "tv/ui/view.hpp"
 
-#if TV_HAVE_LIVE
 namespace tv {
 class LiveReceiver;
 }
 namespace tv::ui {
 class LiveSource;
 }
-#endif
 
 namespace tv::viewer {
 
@@ -156,10 +154,8 @@ class Debugger {
   void reportError(const std::string& what);
   /// A live game: what arrived, and the newest frame while following.
   void refreshLive();
-#if TV_HAVE_LIVE
   [[nodiscard]] ui::LiveSource* liveSource();
   [[nodiscard]] const ui::LiveSource* liveSource() const;
-#endif
 
   // -- windows (debugger_ui.cpp) -------------------------------------------------------------
   void handleKeys(std::span<const KeyPress> keys);
@@ -208,9 +204,7 @@ class Debugger {
   OpenRecordingDialog recordingDialog_;
   SubstepSweep sweep_;
   // A live game: the receiver (shared with its source), where to listen and save.
-#if TV_HAVE_LIVE
   std::shared_ptr<LiveReceiver> receiver_;
-#endif
   bool openListen_ = false, openSave_ = false;
   bool jumpToNewest_ = false;  // a step was asked: show its frame when it comes
   double liveChecksAt_ = 0.0;  // seconds of following since the checks last looked

@@ -24,10 +24,8 @@
 #include "tv/ui/palette.hpp"
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
-#if TV_HAVE_LIVE
 #include "tv/record/live.hpp"
 #include "tv/ui/live_source.hpp"
-#endif
 
 namespace tv::viewer {
 
@@ -444,7 +442,6 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   };
   const bool scene = isScene();
   button("Back", Command::stepBack);
-#if TV_HAVE_LIVE
   if (const ui::LiveSource* l = liveSource()) {
     // A game that allows it is held and stepped from here; any game is followed or not.
     if (l->controllable()) {
@@ -456,9 +453,6 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   } else {
     button(paused_ ? "Play" : "Pause", Command::pause);
   }
-#else
-  button(paused_ ? "Play" : "Pause", Command::pause);
-#endif
   button("Forward", Command::stepForward);
   // Calls only where a frame has them to step through.
   if (!session_->calls().empty() || !scene) {
@@ -537,7 +531,6 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   if (!message_.empty()) {
     (void)note(pal::kBad, message_, "refused: hover, or see the panel", message_, false);
   } else {
-#if TV_HAVE_LIVE
     if (const ui::LiveSource* l = liveSource()) {
       std::string state;
       if (l->run() == 0) {
@@ -554,7 +547,6 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
         (void)note(pal::kRender, d, "dropped: hover", l->notes().back(), false);
       }
     }
-#endif
     if (!notice_.empty()) (void)note(pal::kRender, notice_, "note: hover", notice_, false);
     if (marks.failure) {
       const std::string full = std::string("first failure: ") + unit + " " +

@@ -10,6 +10,8 @@
 //                 [--fail-on tunnel,overlap,differ]
 //                                       re-run the moves with another mover and compare; exit 1
 //                                       when the re-run does what --fail-on names (a game's CI)
+//   tv-replay --listen [HOST:]PORT --out FILE [--frames N] [--wait S]
+//                                       receive a game's live stream into FILE (listen.cpp)
 
 #include <algorithm>
 #include <chrono>
@@ -19,8 +21,9 @@
 #include <string>
 #include <string_view>
 
-#include "tv/app/user_message.hpp"
+#include "listen.hpp"
 #include "tv/app/flags.hpp"
+#include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
 #include "tv/record/replay.hpp"
 
@@ -44,6 +47,7 @@ struct Options {
   std::optional<double> substep;
   double far = 64.0;
   FailOn failOn;
+  std::optional<tv::replay::ListenOptions> listen;
 };
 
 FailOn parseFailOn(std::string_view list) {
@@ -71,6 +75,7 @@ constexpr const char* kUsage =
     "usage: tv-replay FILE [--validate [--allow-truncated] | --stats |\n"
     "                       --what-if NAME [--substep L] [--updates-as-moves] [--far D]\n"
     "                                      [--fail-on tunnel,overlap,differ]] [--tolerant]\n"
+    "       tv-replay --listen [HOST:]PORT --out FILE [--frames N] [--wait S]\n"
     "  (no flag)           summary: frames, calls, moves, collisions, items, size, bytes per move, "
     "replay rate\n"
     "  --validate          replay every call and compare it with the recording; exit 1 on a "
@@ -94,6 +99,11 @@ constexpr const char* kUsage =
     "inside\n"
     "                      a solid (overlap) or ended elsewhere than recorded (differ)\n"
     "  --tolerant          open what can be opened of a damaged file (a bad chunk ends it)\n"
+    "  --listen [HOST:]PORT  receive one game's live stream (a game run with --live, or TV_LIVE)\n"
+    "                      on 127.0.0.1 unless HOST is given; port 0 takes a free one\n"
+    "  --out FILE          with --listen: where the stream is saved, whole frames as they come\n"
+    "  --frames N          with --listen: stop after N frames (default: when the game leaves)\n"
+    "  --wait S            with --listen: give up if no game connects within S seconds\n"
     "Exit status: 0 ok, 1 a divergence, a recording cut short or a --fail-on condition, 2 bad "
     "command line or unreadable file.\n";
 
@@ -125,6 +135,20 @@ Options parse(int argc, char** argv) {
     } else if (a == "--substep") {
       o.substep = tv::app::parseFinite<UsageError>("substep", value());
       if (*o.substep <= 0) throw UsageError{"--substep: expected a length > 0"};
+    } else if (a == "--listen") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->address = std::string(value());
+    } else if (a == "--out") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->out = std::string(value());
+    } else if (a == "--frames") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->frames = tv::app::parseWhole<UsageError>("frames", value());
+      if (o.listen->frames == 0) throw UsageError{"--frames: expected at least 1"};
+    } else if (a == "--wait") {
+      if (!o.listen) o.listen.emplace();
+      o.listen->waitSeconds = tv::app::parseFinite<UsageError>("wait", value());
+      if (o.listen->waitSeconds <= 0) throw UsageError{"--wait: expected seconds > 0"};
     } else if (a == "--far") {
       o.far = tv::app::parseFinite<UsageError>("far", value());
       if (o.far < 0) throw UsageError{"--far: expected a distance >= 0"};
@@ -136,6 +160,15 @@ Options parse(int argc, char** argv) {
       throw UsageError{"one recording at a time (got '" + o.file + "' and '" + std::string(a) +
                        "')"};
     }
+  }
+  if (o.listen) {
+    if (o.listen->address.empty()) throw UsageError{"--out, --frames and --wait go with --listen"};
+    if (o.listen->out.empty()) throw UsageError{"--listen needs --out FILE (where to save it)"};
+    if (!o.file.empty() || o.validate || o.stats || o.mover || o.tolerant || o.allowTruncated ||
+        o.failOn.any()) {
+      throw UsageError{"--listen receives a recording: validate it afterwards with tv-replay FILE"};
+    }
+    return o;
   }
   if (o.file.empty()) throw UsageError{"no recording given"};
   if ((o.validate + o.stats + o.mover.has_value()) > 1) {
@@ -239,8 +272,7 @@ int stats(tv::Replay& r) {
     }
     std::printf("| %s | %s | %llu | %llu | %.3f | %llu |\n", it.label.c_str(), it.category.c_str(),
                 static_cast<unsigned long long>(it.moves), static_cast<unsigned long long>(it.hits),
-                it.maxSpeed,
-                static_cast<unsigned long long>(it.endedOverlapping));
+                it.maxSpeed, static_cast<unsigned long long>(it.endedOverlapping));
   }
   std::printf("\n%zu items never moved (tiles, walls...).\n", still);
   return 0;
@@ -375,6 +407,7 @@ int main(int argc, char** argv) {
     std::cerr << "tv-replay: " << e.message << "\n" << kUsage;
     return 2;
   }
+  if (o.listen) return tv::replay::listen(*o.listen);
   try {
     tv::ReplayOptions ro;
     ro.tolerant = o.tolerant;
@@ -384,8 +417,7 @@ int main(int argc, char** argv) {
       tv::MoverSpec spec = tv::parseMover(*o.mover);
       if (o.substep) {
         if (spec.kind != tv::MoverKind::substep) {
-          throw tv::Error("--substep applies to the substep-* movers, not '" + *o.mover +
-                          "'");
+          throw tv::Error("--substep applies to the substep-* movers, not '" + *o.mover + "'");
         }
         spec.maxStep = *o.substep;
       }

@@ -106,19 +106,29 @@ Mover::Mover(MoverSpec spec) : spec_(spec), name_(spec.name()) {
 
 MoveResult Mover::move(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
   if (WorldObserver* o = world.observer(); o && !o->busy()) [[unlikely]] {
-    // One recorded call: the world calls this policy makes are replayed by making it again.
-    const WorldObserver::Scope scope(*o);
-    const WorldObserver::Watched watched{filter, *o};
-    try {
-      const Rect start = world.rect(id);
-      const MoveResult r = move(world, id, goal, Filter(watched), trace);
-      o->moverMoved(*this, id, start, goal, r);
-      return r;
-    } catch (...) {
-      o->failed();
-      throw;
-    }
+    return observedMove(*o, world, id, goal, filter, trace);
   }
+  return policyMove(world, id, goal, filter, trace);
+}
+
+// One recorded call: the world calls this policy makes are replayed by making it again. Out of
+// line and without a second trip through move(): a recorded game pays for this on every move.
+MoveResult Mover::observedMove(WorldObserver& o, World& world, ItemId id, Vec2 goal, Filter filter,
+                               MoveTrace* trace) {
+  const WorldObserver::Scope scope(o);
+  const WorldObserver::Watched watched{filter, o};
+  try {
+    const Rect start = world.rect(id);
+    const MoveResult r = policyMove(world, id, goal, Filter(watched), trace);
+    o.moverMoved(*this, id, start, goal, r);
+    return r;
+  } catch (...) {
+    o.failed();
+    throw;
+  }
+}
+
+MoveResult Mover::policyMove(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace) {
   trace = activeTrace(trace);
   if (trace) {
     trace->clear();

@@ -540,6 +540,7 @@ MoveResult World::check(ItemId id, Vec2 goal, Filter filter, const MoveOptions& 
   const Slot& s = slot(id, "tv::World::check");
   validateGoal(s.rect, goal, "tv::World::check");
   validateOptions(options, "tv::World::check");
+  if (options.semantics == MoveSemantics::bump) return bumpRun(id.index, s.rect, goal, filter, options);
   return run(id.index, s.rect, goal, filter, options);
 }
 
@@ -553,6 +554,11 @@ MoveResult World::move(ItemId id, Vec2 goal, Filter filter, const MoveOptions& o
   const Slot& s = slot(id, kMove);
   validateGoal(s.rect, goal, kMove);
   validateOptions(options, kMove);
+  if (options.semantics == MoveSemantics::bump) {
+    const MoveResult result = bumpRun(id.index, s.rect, goal, filter, options);
+    place(id.index, s.rect.at(result.position));
+    return result;
+  }
   if (activeTrace(options.trace) == nullptr) {
     // Most moves in a crowd meet nothing: when every other item that meets the move's bounding
     // box is ignored by the filter, the full path would find no hit and end at the goal, so one
@@ -629,6 +635,7 @@ MoveResult World::project(const Rect& r, Vec2 goal, Filter filter,
   validateRect(r, "tv::World::project");
   validateGoal(r, goal, "tv::World::project");
   validateOptions(options, "tv::World::project");
+  if (options.semantics == MoveSemantics::bump) return bumpRun(ItemId::kNone, r, goal, filter, options);
   return run(ItemId::kNone, r, goal, filter, options);
 }
 

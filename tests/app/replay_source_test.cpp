@@ -4,6 +4,7 @@
 
 #include "tv/record/recorder.hpp"
 #include "tv/record/replay.hpp"
+#include "tv/ui/palette.hpp"
 #include "tv/ui/replay_source.hpp"
 
 namespace tv::ui {
@@ -209,6 +210,42 @@ TEST(ReplaySource, PlayingForwardShowsWhatSeekingShows) {
     for (std::size_t k = 0; k < played.history().size(); ++k) {
       EXPECT_EQ(played.history()[k].tick, sought.history()[k].tick) << "frame " << f;
       EXPECT_EQ(played.history()[k].trace.final, sought.history()[k].trace.final);
+    }
+  }
+}
+
+// Items that never move: level geometry is drawn as solids, but an item the game said what it
+// is (a guard that stands and shoots) is drawn as a body in its category's colour.
+//
+//   [g]          [p]-->        g: "guard 1", category Guardian, never moves
+//   ================           tiles, category "tile" (most of what never moves): solids
+TEST(ReplaySource, DrawsAnItemThatNeverMovesInItsCategorysColourUnlessItIsTheLevel) {
+  World w(16);
+  Recorder rec;
+  w.attach(rec);
+  for (int i = 0; i < 8; ++i) rec.label(w.add({i * 16.0, 32, 16, 16}), "tile", "tile");
+  const ItemId guard = w.add({0, 16, 8, 16});
+  rec.label(guard, "guard 1", "Guardian");
+  const ItemId player = w.add({40, 20, 8, 12});
+  rec.label(player, "player", "player");
+  for (int f = 0; f < 3; ++f) {
+    (void)w.move(player, w.rect(player).position() + Vec2{4, 0});
+    rec.frame();
+  }
+  w.detach();
+  rec.close();
+  ReplaySource s(Replay::fromBytes(rec.bytes()), "game.tvrec");
+  s.goTo(2);
+  const WorldPicture p = s.picture();
+  EXPECT_EQ(p.solids.size(), 8u);
+  ASSERT_EQ(p.bodies.size(), 2u);
+  ASSERT_EQ(p.bodyFills.size(), 2u);
+  for (std::size_t i = 0; i < p.bodies.size(); ++i) {
+    if (p.bodies[i].item == guard) {
+      EXPECT_EQ(p.bodyFills[i], palette::categoryColour("Guardian"));
+    } else {
+      EXPECT_EQ(p.bodies[i].item, player);
+      EXPECT_EQ(p.bodyFills[i], 0u);  // a moving body keeps the body colours
     }
   }
 }

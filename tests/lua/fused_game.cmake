@@ -12,7 +12,7 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/game/tunnelvision ${WORK}/ship)
 file(COPY ${SOURCE}/tests/lua/fused/main.lua ${SOURCE}/tests/lua/fused/conf.lua
      DESTINATION ${WORK}/game)
-file(COPY ${SOURCE}/core/lua/example/tunnelvision/bump.lua DESTINATION ${WORK}/game/tunnelvision)
+file(COPY ${SOURCE}/core/lua/tunnelvision/bump.lua DESTINATION ${WORK}/game/tunnelvision)
 execute_process(COMMAND ${CMAKE_COMMAND} -E tar cf ${WORK}/ship/game.love --format=zip
                         main.lua conf.lua tunnelvision/bump.lua
                 WORKING_DIRECTORY ${WORK}/game RESULT_VARIABLE rc)

@@ -1,7 +1,8 @@
 # The Lua module cross-compiled for Windows with MinGW-w64 (cmake/toolchains/mingw-w64-x86_64.cmake):
 # it builds, it exports luaopen_tunnelvision and luaopen_tunnelvision_bump and nothing else, and
 # it imports its Lua API from lua51.dll (what LÖVE ships beside love.exe) and otherwise only
-# from Windows itself — no MinGW runtime DLL to ship beside it. Not run: there is no Windows here.
+# from Windows itself — the C runtime, the kernel, and Winsock 2 (WS2_32.dll, the live stream's
+# sockets): no MinGW runtime DLL to ship beside it. Not run: there is no Windows here.
 #   cmake -DSOURCE=repo -DWORK=dir -P windows_dll.cmake
 foreach(v SOURCE WORK)
   if(NOT DEFINED ${v})
@@ -36,9 +37,9 @@ set(headers "${last_output}")
 string(REGEX MATCHALL "DLL Name: [^\n]+" imports "${headers}")
 string(REPLACE "DLL Name: " "" imports "${imports}")
 list(SORT imports)
-if(NOT imports STREQUAL "KERNEL32.dll;lua51.dll;msvcrt.dll")
-  message(FATAL_ERROR "tunnelvision.dll imports ${imports}; expected KERNEL32.dll, lua51.dll "
-                      "and msvcrt.dll only")
+if(NOT imports STREQUAL "KERNEL32.dll;WS2_32.dll;lua51.dll;msvcrt.dll")
+  message(FATAL_ERROR "tunnelvision.dll imports ${imports}; expected KERNEL32.dll, WS2_32.dll, "
+                      "lua51.dll and msvcrt.dll only")
 endif()
 string(REGEX MATCH "\\[Ordinal/Name Pointer\\] Table\n(([ \t]+\\[[ 0-9]+\\] [^\n]+\n)+)" _ "${headers}")
 string(REGEX MATCHALL "\\] [A-Za-z_0-9]+" exports "${CMAKE_MATCH_1}")

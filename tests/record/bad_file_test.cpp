@@ -146,7 +146,7 @@ TEST(BadFile, EmptyShortOrForeignFilesAreRefusedAtByteZero) {
 
 TEST(BadFile, AFutureVersionIsRefusedNamingIt) {
   Bytes f = header(16.0, 2);
-  EXPECT_ERROR(f, "byte 8", "format version 2.0", "version 1.0");
+  EXPECT_ERROR(f, "byte 8", "format version 2.0", "version 1.1");
 }
 
 TEST(BadFile, ABadHeaderChecksumOrCellSizeIsRefused) {

@@ -165,5 +165,30 @@ TEST_F(DebuggerDriver, AMapWithNothingSolidSaysSoInTheWindow) {
   EXPECT_EQ(hud.find("nothing failed"), std::string::npos) << hud;
 }
 
+// A recording draws an item that never moves but has a category (a standing enemy) in that
+// category's colour, and its legend says so; a scene has no such item, so its legend leaves the
+// entry out (and its pictures keep their room). The longer label is whole in one panel and in
+// a what-if view, at 1280 and at 1024 px.
+TEST_F(DebuggerDriver, OnlyARecordingsLegendNamesTheCategoryColourAndItsLabelIsWhole) {
+  open({"--scene", "bullets-wall", "--tick", "1"});
+  frames(2);
+  EXPECT_EQ(drawnText("Legend").find("never moves"), std::string::npos) << drawnText("Legend");
+  EXPECT_NE(drawnText("Legend").find("body, stopped"), std::string::npos);
+  for (const float w : {1280.0f, 1024.0f}) {
+    resize(w, w == 1280.0f ? 720.0f : 640.0f);
+    for (const bool whatIf : {false, true}) {
+      std::vector<std::string> args = {sampleRecording(), "--frame", "62", "--call", "2"};
+      if (whatIf) args.insert(args.end(), {"--what-if", "discrete"});
+      open(args);
+      frames(2);
+      const std::string legend = drawnText("Legend");
+      EXPECT_NE(legend.find("never moves, by category"), std::string::npos)
+          << w << (whatIf ? " what-if: " : ": ") << legend;
+      std::string where;
+      EXPECT_EQ(cutGlyphs(&where), 0) << w << (whatIf ? " what-if: " : ": ") << where;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tv::viewer

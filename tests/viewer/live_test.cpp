@@ -2,7 +2,6 @@
 // (on a thread of its own, as a real game would be), the debugger driven frame by frame.
 #include "driver.hpp"
 
-#if TV_HAVE_LIVE
 #include <filesystem>
 
 #include "record/live_kit.hpp"
@@ -164,4 +163,3 @@ TEST_F(LiveDriver, APortInUseIsRefusedNamingIt) {
 }  // namespace
 }  // namespace tv::viewer
 
-#endif  // TV_HAVE_LIVE

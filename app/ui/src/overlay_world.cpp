@@ -100,7 +100,8 @@ void drawBodies(ImDrawList& dl, const Camera& cam, const WorldPicture& pic) {
     const sim::Body& b = pic.bodies[i];
     const Rect r = i < pic.renderRects.size() ? pic.renderRects[i] : b.rect;
     if (!cam.sees(r)) continue;
-    detail::fill(dl, cam, r, b.active ? pal::kBody : pal::kBodyIdle);
+    const ImU32 own = i < pic.bodyFills.size() ? pic.bodyFills[i] : 0;
+    detail::fill(dl, cam, r, own != 0 ? own : b.active ? pal::kBody : pal::kBodyIdle);
   }
   if (pic.selected && *pic.selected < pic.bodies.size()) {
     const std::size_t i = *pic.selected;

@@ -1,5 +1,7 @@
 #include "tv/ui/palette.hpp"
 
+#include <cstdint>
+
 #include <algorithm>
 
 namespace tv::ui::palette {
@@ -18,6 +20,7 @@ std::span<const LegendEntry> legend() {
       {kCandidate, Swatch::outline, "candidate"},
       {kBody, Swatch::fill, "body, moving"},
       {kBodyIdle, Swatch::fill, "body, stopped"},
+      {kCategoryHues[0], Swatch::fill, "never moves, by category", true},
       {kSelected, Swatch::outline, "traced body"},
       {kSweep, Swatch::arrow, "swept segment"},
       {kHullEdge, Swatch::fill, "swept hull"},
@@ -30,6 +33,13 @@ std::span<const LegendEntry> legend() {
       {kPixel, Swatch::outline, "floored pixel"},
   };
   return kEntries;
+}
+
+ImU32 categoryColour(std::string_view category) {
+  // FNV-1a of the name: stable across runs and machines (std::hash is not promised to be).
+  std::uint32_t h = 2166136261u;
+  for (const char c : category) h = (h ^ static_cast<unsigned char>(c)) * 16777619u;
+  return kCategoryHues[h % std::size(kCategoryHues)];
 }
 
 }  // namespace tv::ui::palette

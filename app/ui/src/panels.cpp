@@ -1,6 +1,7 @@
 // The panels around a tunable source and every source: controls, counters, HUD and legend.
 #include "tv/ui/panels.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cinttypes>
@@ -360,9 +361,24 @@ void hudContents(const Source& source, const DebuggerState& st) {
   }
 }
 
-void legendContents(int columns) {
+int legendColumns(float width, bool recorded) {
+  // A column holds the swatch and the widest label shown, and never less than ~150 px (the
+  // scene legend's columns, whose labels are short).
+  float widest = 0.0f;
+  for (const pal::LegendEntry& e : pal::legend()) {
+    if (e.recordedOnly && !recorded) continue;
+    widest = std::max(widest, ImGui::CalcTextSize(e.label).x);
+  }
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float column = std::max(150.0f, widest + ImGui::GetTextLineHeight() +
+                                            style.ItemSpacing.x + 2.0f * style.CellPadding.x + 4.0f);
+  return std::clamp(static_cast<int>(width / column), 1, 8);
+}
+
+void legendContents(int columns, bool recorded) {
   if (!ImGui::BeginTable("legend", columns)) return;
   for (const pal::LegendEntry& e : pal::legend()) {
+    if (e.recordedOnly && !recorded) continue;
     ImGui::TableNextColumn();
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const float s = ImGui::GetTextLineHeight();

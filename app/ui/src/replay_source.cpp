@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "tv/ui/palette.hpp"
+
 namespace tv::ui {
 
 std::unique_ptr<ReplaySource> ReplaySource::open(const std::string& path, ReplayOptions options) {
@@ -28,6 +30,18 @@ ReplaySource::ReplaySource(Replay replay, std::string name, Origin origin, Sourc
     : replay_(std::move(replay)), name_(std::move(name)), origin_(std::move(origin)), kind_(kind) {
   const auto items = replay_.items();
   for (std::size_t i = 0; i < items.size(); ++i) recorded_.emplace(items[i].id, i);
+  // The level's geometry: the category that more than half of the items that never move have
+  // (blocks, tiles). Drawn as solids, with the items that have no category.
+  std::unordered_map<std::string, std::size_t> still;
+  std::size_t stillCount = 0;
+  for (const RecordedItem& i : items) {
+    if (i.moves > 0) continue;
+    ++stillCount;
+    if (!i.category.empty()) ++still[i.category];
+  }
+  for (const auto& [category, n] : still) {
+    if (2 * n > stillCount) terrain_ = category;
+  }
   goTo(0);
 }
 
@@ -135,15 +149,23 @@ bool ReplaySource::moves(ItemId id) const {
 WorldPicture ReplaySource::picture() {
   solids_.clear();
   bodies_.clear();
+  bodyFills_.clear();
   std::optional<std::size_t> selectedBody;
   world().forEachItem([&](ItemId id, const Rect& r) {
     const bool isSelected = selected_ && *selected_ == id;
-    if (moves(id) || isSelected) {
+    const auto at = recorded_.find(id);
+    const RecordedItem* item = at != recorded_.end() ? &replay_.items()[at->second] : nullptr;
+    const bool moving = item != nullptr && item->moves > 0;
+    // An item that never moves is level geometry, unless the game said what it is: an enemy
+    // that stands and shoots is drawn as a body, in its category's colour.
+    const bool named = item != nullptr && !item->category.empty() && item->category != terrain_;
+    if (moving || isSelected || named) {
       if (isSelected) selectedBody = bodies_.size();
       sim::Body b;
       b.item = id;
       b.rect = r;
       bodies_.push_back(b);
+      bodyFills_.push_back(!moving && named ? palette::categoryColour(item->category) : 0);
     } else {
       solids_.push_back({r, 0});
     }
@@ -152,6 +174,7 @@ WorldPicture ReplaySource::picture() {
   p.world = &world();
   p.solids = solids_;
   p.bodies = bodies_;
+  p.bodyFills = bodyFills_;
   p.selected = selectedBody;
   p.moves = moves_;
   return p;

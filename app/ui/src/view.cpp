@@ -319,7 +319,10 @@ void onePanel(Session& s, ViewState& v, ImVec2 origin, ImVec2 size, float side, 
     st.coveredTop = ImGui::GetWindowPos().y - origin.y + ImGui::GetWindowHeight() + kMargin;
   }
   ImGui::End();
-  st.coveredBottom = detail::legendOverlay(origin, {worldW, size.y}, worldW > 700.0f ? 4 : 3);
+  const bool recorded = src.sim() == nullptr;
+  st.coveredBottom = detail::legendOverlay(
+      origin, {worldW, size.y},
+      std::min(worldW > 700.0f ? 4 : 3, legendColumns(worldW - 2 * kMargin, recorded)), recorded);
   drawColumn(s, v, {origin.x + worldW, origin.y, side, size.y}, a);
 }
 
@@ -458,8 +461,9 @@ void sideBySide(Session& s, ViewState& v, ImVec2 origin, ImVec2 size, float side
   ImGui::SetNextWindowSize({panelsW, 0}, ImGuiCond_Always);
   float bottom = 0.0f;
   if (ImGui::Begin("Legend", nullptr, kOverlay)) {
-    // Legend columns of at least ~150 px keep its labels whole.
-    legendContents(std::clamp(static_cast<int>(panelsW / 150.0f), 3, 8));
+    // Legend columns wide enough to keep its labels whole.
+    const bool recorded = s.primary().sim() == nullptr;
+    legendContents(legendColumns(panelsW, recorded), recorded);
     bottom = ImGui::GetWindowHeight();
   }
   ImGui::End();

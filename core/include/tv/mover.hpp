@@ -111,6 +111,9 @@ class Mover {
   }
 
  private:
+  MoveResult observedMove(WorldObserver& o, World& world, ItemId id, Vec2 goal, Filter filter,
+                          MoveTrace* trace);
+  MoveResult policyMove(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);
   MoveResult discrete(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace,
                       std::vector<Collision>& out);
   MoveResult substep(World& world, ItemId id, Vec2 goal, Filter filter, MoveTrace* trace);

@@ -47,6 +47,10 @@ struct Leg {
   Vec2 start;  ///< where the next leg begins (the collision's touch point, usually)
   Vec2 goal;   ///< where it aims
   bool passThrough = false;  ///< exclude `other` from the rest of this move (cross)
+  /// Bump semantics only (MoveSemantics::bump): the response found nothing more in its way, so
+  /// the move ends at `goal` (bump's response returned no collisions). Otherwise the next leg
+  /// runs from `start` to `goal`.
+  bool stop = false;
 };
 
 /// A response: given the first collision of the current leg and that leg's goal, the next leg.

@@ -47,6 +47,15 @@ enum class BroadPhase : std::uint8_t {
   bounds,  ///< every cell of the move's bounding box, as bump.lua does
 };
 
+/// Whose rules a move, check or project follows.
+enum class MoveSemantics : std::uint8_t {
+  tunnelvision,  ///< the core's (above): exact sweep, any number of visits, add-order ties
+  /// bump.lua 3.1.7's, for games written against it (tv/bump.hpp): its collision tests, order,
+  /// responses and `visited` rule. `broad` and `maxResponses` do not apply (every item is met at
+  /// most once, which bounds a move).
+  bump,
+};
+
 /// How World::move, check and project search, trace and stop.
 struct MoveOptions {
   BroadPhase broad = BroadPhase::swept;  ///< which cells are searched (default: the path's)
@@ -54,6 +63,7 @@ struct MoveOptions {
   /// Responses per move before the item stops where it is (acute pockets, bounce between
   /// walls closer than the move). Range [1, 4096].
   int maxResponses = 64;
+  MoveSemantics semantics = MoveSemantics::tunnelvision;  ///< whose rules (default: the core's)
 };
 
 /// What a move did: where the item ended and what it met on the way.
@@ -192,6 +202,9 @@ class World {
   [[nodiscard]] Leg respond(const Collision& c, Vec2 goal) const;
   /// The response registered under `name`; throws tv::Error if there is none.
   [[nodiscard]] ResponseId responseId(std::string_view name) const;
+  /// While a response runs inside a move with bump semantics: the items the move has met so far
+  /// (bump's `visited`), which projections the response makes must leave out. Empty otherwise.
+  [[nodiscard]] std::span<const ItemId> metThisMove() const { return bumpMet_; }
 
   // -- queries -------------------------------------------------------------------------------
   /// Items whose interior overlaps `r` (touching is not enough), in add order. `skip` is left
@@ -345,6 +358,12 @@ class World {
   void forEachCandidate(std::uint32_t self, const Rect& r, Vec2 goal, const Rect& hull,
                         BroadPhase broad, MoveTrace* trace, F&& f) const;
   std::uint32_t nextEpoch() const;
+  // bump.lua's move (MoveSemantics::bump), core/src/bump_move.cpp.
+  MoveResult bumpRun(std::uint32_t self, const Rect& r, Vec2 goal, Filter filter,
+                     const MoveOptions& o) const;
+  bool bumpFirstHit(ItemId self, const Rect& at, Vec2 goal, Filter filter, MoveTrace* trace,
+                    Collision& out) const;
+  bool bumpGuard(const Rect& at, Vec2 goal, const Collision* first, Collision& out) const;
 
   Grid grid_;
   Hash hash_;
@@ -370,6 +389,13 @@ class World {
   mutable std::vector<std::uint32_t> queryScratch_;
   mutable std::vector<Candidate> candidates_;
   mutable std::vector<Hit> hits_;
+  // bump's move: a leg's candidates, what it met (ids, the answer for each, and whether it may
+  // not be entered again), kept apart from the core's own scratch.
+  mutable std::vector<ItemId> bumpFound_;
+  mutable std::vector<Collision> bumpHits_;
+  mutable std::vector<ItemId> bumpMet_;
+  mutable std::vector<ResponseId> bumpMetResponse_;
+  mutable std::vector<bool> bumpMetGuard_;
 };
 
 }  // namespace tv

@@ -3,14 +3,16 @@
 -- must return bump's tables) and through tunnelvision's world:go (no garbage). Prints ms per
 -- tick, garbage per tick and the cost of a call from Lua into the module.
 --
---   luajit core/lua/bench/crowd.lua [--quick] [--module-dir build/release/lua]
+--   luajit core/lua/bench/crowd.lua [--quick] [--module-dir build/release/lua] [--bump PATH]
+--   (--bump: also bump.lua itself, from a file of yours, in the same run)
 --   lua5.1 core/lua/bench/crowd.lua ...          (PUC Lua, for comparison)
-local moduleDir, quick = 'build/release/lua', false
+local moduleDir, quick, bumpPath = 'build/release/lua', false, nil
 local i = 1
 while arg and arg[i] do
   if arg[i] == '--quick' then quick = true
   elseif arg[i] == '--module-dir' then moduleDir = arg[i + 1]; i = i + 1
-  else error('unknown argument ' .. arg[i] .. ' (expected --quick, --module-dir DIR)') end
+  elseif arg[i] == '--bump' then bumpPath = arg[i + 1]; i = i + 1
+  else error('unknown argument ' .. arg[i] .. ' (expected --quick, --module-dir DIR, --bump PATH)') end
   i = i + 1
 end
 package.cpath = moduleDir .. '/?.so;' .. package.cpath
@@ -27,9 +29,10 @@ local function rng(seed)
   end
 end
 
-local function build(count)
+-- newWorld: tunnelvision.bump's (bump.lua's rules) or tunnelvision's (the core's).
+local function build(count, newWorld)
   local rand = rng(20240601)
-  local world = tv.newWorld(32)
+  local world = newWorld(32)
   local free = {}
   for ty = 0, SIDE - 1 do
     for tx = 0, SIDE - 1 do
@@ -84,8 +87,8 @@ local function tickGo(world, movers)
   end
 end
 
-local function measure(count, tick, ticks)
-  local world, movers = build(count)
+local function measure(count, tick, ticks, newWorld)
+  local world, movers = build(count, newWorld)
   for _ = 1, 20 do tick(world, movers) end  -- warm up (traces, core buffers)
   collectgarbage('collect')
   -- garbage: a few ticks with the collector stopped
@@ -132,8 +135,12 @@ print('| movers | API | ms/tick | garbage KB/tick | bytes/move |')
 print('|---:|---|---:|---:|---:|')
 for _, count in ipairs(quick and { 1000 } or { 1000, 10000 }) do
   local ticks = quick and 5 or (count >= 10000 and 30 or 100)
-  for _, api in ipairs({ { 'tunnelvision.bump  world:move', tickBump }, { 'tunnelvision  world:go', tickGo } }) do
-    local ms, kb = measure(count, api[2], ticks)
+  local apis = { { 'tunnelvision.bump  world:move', tickBump, tv.bump.newWorld },
+                 { 'tunnelvision  world:move', tickBump, tv.newWorld },
+                 { 'tunnelvision  world:go', tickGo, tv.newWorld } }
+  if bumpPath then table.insert(apis, 1, { 'bump.lua  world:move', tickBump, dofile(bumpPath).newWorld }) end
+  for _, api in ipairs(apis) do
+    local ms, kb = measure(count, api[2], ticks, api[3])
     print(('| %d | %s | %.2f | %.1f | %.1f |'):format(count, api[1], ms, kb, kb * 1024 / count))
   end
 end

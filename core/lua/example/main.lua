@@ -9,7 +9,10 @@
 -- Without tunnelvision.so in this directory (or the save directory), the module is looked for
 -- in $TV_LUA_MODULE_DIR and then in package.cpath.
 local dir = os.getenv('TV_LUA_MODULE_DIR')
-if dir then package.cpath = dir .. '/?.so;' .. package.cpath end
+if dir then
+  package.cpath = dir .. '/?.so;' .. package.cpath
+  package.path = dir .. '/?.lua;' .. package.path
+end
 
 local bump = require 'tunnelvision.bump'
 

@@ -1,69 +1,54 @@
-// bump.rect.*: bump.lua's rectangle helpers, callable directly. All but detectCollision are
-// plain arithmetic with bump's conventions (its 1e-10 margin in containsPoint included);
-// detectCollision is the core's exact sweep in bump's table shape.
+// bump.rect.*: bump.lua's rectangle helpers, callable directly, with bump's results bit for bit
+// (the arithmetic is core/src/bump.cpp's, shared with the worlds' moves).
 
 #include <cmath>
 #include <limits>
 
 #include "boundary.hpp"
 #include "lua_world.hpp"
-#include "tv/sweep.hpp"
+#include "tv/bump.hpp"
 
 namespace tvlua {
 namespace {
 
-constexpr double kDelta = 1e-10;  // bump.lua's margin, kept for containsPoint's callers
-
-double nearest(double v, double a, double b) { return std::fabs(a - v) < std::fabs(b - v) ? a : b; }
+// n numbers from index 1 (bump's helpers take any numbers; infinities are fine there).
+template <std::size_t N>
+void numbers(lua_State* L, double (&v)[N]) {
+  for (std::size_t i = 0; i < N; ++i) v[i] = luaL_checknumber(L, static_cast<int>(i) + 1);
+}
 
 int getNearestCorner(lua_State* L) {
-  const double x = checkFinite(L, 1, "x"), y = checkFinite(L, 2, "y");
-  const double w = checkFinite(L, 3, "w"), h = checkFinite(L, 4, "h");
-  const double px = checkFinite(L, 5, "px"), py = checkFinite(L, 6, "py");
-  lua_pushnumber(L, nearest(px, x, x + w));
-  lua_pushnumber(L, nearest(py, y, y + h));
+  double v[6];
+  numbers(L, v);
+  const tv::Vec2 c = tv::bump::nearestCorner({v[0], v[1], v[2], v[3]}, {v[4], v[5]});
+  lua_pushnumber(L, c.x);
+  lua_pushnumber(L, c.y);
   return 2;
 }
 
-// Liang-Barsky clipping of the segment (x1,y1)->(x2,y2) against the rect, over the parameter
-// range [ti1, ti2]: the entry and exit parameters and the normals of the sides crossed there.
+// (x,y,w,h, x1,y1,x2,y2 [, ti1 = 0, ti2 = 1]) -> ti1, ti2, nx1, ny1, nx2, ny2, or nil
 int getSegmentIntersectionIndices(lua_State* L) {
-  const double x = luaL_checknumber(L, 1), y = luaL_checknumber(L, 2);
-  const double w = luaL_checknumber(L, 3), h = luaL_checknumber(L, 4);
-  const double x1 = luaL_checknumber(L, 5), y1 = luaL_checknumber(L, 6);
-  const double x2 = luaL_checknumber(L, 7), y2 = luaL_checknumber(L, 8);
-  double t0 = luaL_optnumber(L, 9, 0.0), t1 = luaL_optnumber(L, 10, 1.0);
-  const double dx = x2 - x1, dy = y2 - y1;
-  double n0x = 0, n0y = 0, n1x = 0, n1y = 0;
-  const struct {
-    double nx, ny, p, q;
-  } sides[4] = {{-1, 0, -dx, x1 - x}, {1, 0, dx, x + w - x1}, {0, -1, -dy, y1 - y}, {0, 1, dy, y + h - y1}};
-  for (const auto& s : sides) {
-    if (s.p == 0) {
-      if (s.q <= 0) return 0;  // parallel to this side and outside it
-      continue;
-    }
-    const double r = s.q / s.p;
-    if (s.p < 0) {  // entering through this side
-      if (r > t1) return 0;
-      if (r > t0) t0 = r, n0x = s.nx, n0y = s.ny;
-    } else {  // leaving through it
-      if (r < t0) return 0;
-      if (r < t1) t1 = r, n1x = s.nx, n1y = s.ny;
-    }
+  double v[8];
+  numbers(L, v);
+  const double t0 = luaL_optnumber(L, 9, 0.0), t1 = luaL_optnumber(L, 10, 1.0);
+  const tv::bump::Indices i =
+      tv::bump::segmentIndices({v[0], v[1], v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}, t0, t1);
+  if (!i.hit) {
+    lua_pushnil(L);
+    return 1;
   }
-  lua_pushnumber(L, t0);
-  lua_pushnumber(L, t1);
-  lua_pushnumber(L, n0x);
-  lua_pushnumber(L, n0y);
-  lua_pushnumber(L, n1x);
-  lua_pushnumber(L, n1y);
+  lua_pushnumber(L, i.ti1);
+  lua_pushnumber(L, i.ti2);
+  lua_pushnumber(L, i.normal1.x);
+  lua_pushnumber(L, i.normal1.y);
+  lua_pushnumber(L, i.normal2.x);
+  lua_pushnumber(L, i.normal2.y);
   return 6;
 }
 
 int getDiff(lua_State* L) {
   double v[8];
-  for (int i = 0; i < 8; ++i) v[i] = luaL_checknumber(L, i + 1);
+  numbers(L, v);
   lua_pushnumber(L, v[4] - v[0] - v[2]);
   lua_pushnumber(L, v[5] - v[1] - v[3]);
   lua_pushnumber(L, v[2] + v[6]);
@@ -73,25 +58,22 @@ int getDiff(lua_State* L) {
 
 int containsPoint(lua_State* L) {
   double v[6];
-  for (int i = 0; i < 6; ++i) v[i] = luaL_checknumber(L, i + 1);
-  const double x = v[0], y = v[1], w = v[2], h = v[3], px = v[4], py = v[5];
-  lua_pushboolean(L, px - x > kDelta && py - y > kDelta && x + w - px > kDelta && y + h - py > kDelta);
+  numbers(L, v);
+  lua_pushboolean(L, tv::bump::containsPoint({v[0], v[1], v[2], v[3]}, {v[4], v[5]}));
   return 1;
 }
 
 int isIntersecting(lua_State* L) {
   double v[8];
-  for (int i = 0; i < 8; ++i) v[i] = luaL_checknumber(L, i + 1);
-  lua_pushboolean(L, tv::overlaps({v[0], v[1], v[2], v[3]}, {v[4], v[5], v[6], v[7]}));
+  numbers(L, v);
+  lua_pushboolean(L, tv::bump::isIntersecting({v[0], v[1], v[2], v[3]}, {v[4], v[5], v[6], v[7]}));
   return 1;
 }
 
 int getSquareDistance(lua_State* L) {
   double v[8];
-  for (int i = 0; i < 8; ++i) v[i] = luaL_checknumber(L, i + 1);
-  const double dx = v[0] - v[4] + (v[2] - v[6]) / 2;
-  const double dy = v[1] - v[5] + (v[3] - v[7]) / 2;
-  lua_pushnumber(L, dx * dx + dy * dy);
+  numbers(L, v);
+  lua_pushnumber(L, tv::bump::squareDistance({v[0], v[1], v[2], v[3]}, {v[4], v[5], v[6], v[7]}));
   return 1;
 }
 
@@ -117,13 +99,14 @@ void setRect(lua_State* L, const char* field, const tv::Rect& r) {
   lua_setfield(L, -2, field);
 }
 
+// (x1,y1,w1,h1, x2,y2,w2,h2 [, goalX, goalY]) -> nil, or bump's collision table
 int detectCollision(lua_State* L) {
   const tv::Rect a{checkFinite(L, 1, "x1"), checkFinite(L, 2, "y1"), checkPositive(L, 3, "w1"),
                    checkPositive(L, 4, "h1")};
   const tv::Rect b{checkFinite(L, 5, "x2"), checkFinite(L, 6, "y2"), checkPositive(L, 7, "w2"),
                    checkPositive(L, 8, "h2")};
   const tv::Vec2 goal{optFinite(L, 9, "goalX", a.x), optFinite(L, 10, "goalY", a.y)};
-  const tv::Sweep s = tv::sweepRect(a, goal, b);
+  const tv::Sweep s = tv::bump::detect(a, goal, b);
   if (s.kind == tv::SweepKind::miss) return 0;
   lua_createtable(L, 0, 7);
   lua_pushboolean(L, s.kind == tv::SweepKind::overlap);
@@ -139,7 +122,6 @@ int detectCollision(lua_State* L) {
 }
 
 }  // namespace
-
 void pushRectFunctions(lua_State* L) {
   const luaL_Reg fns[] = {
       {"getNearestCorner", guarded<getNearestCorner>},

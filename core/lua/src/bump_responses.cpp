@@ -1,6 +1,7 @@
 // bump.responses.*: the four responses with bump.lua's signature
 // fn(world, col, x,y,w,h, goalX, goalY, filter) -> goalX, goalY, cols, len, callable directly
-// (and usable in world:addResponse). slide and bounce write col.slide / col.bounce as bump does.
+// (and usable in world:addResponse), as bump defines them. slide and bounce write col.slide /
+// col.bounce. A world's moves run the same rules in the core (core/src/bump_move.cpp).
 
 #include "boundary.hpp"
 #include "lua_world.hpp"
@@ -45,48 +46,63 @@ int touch(lua_State* L) {
   return 4;
 }
 
+// bump projects a cross again from x,y (the item's rect before the move), to the same goal.
 int cross(lua_State* L) {
   luaL_checktype(L, 2, LUA_TTABLE);
   lua_settop(L, 9);
   const double x = luaL_checknumber(L, 3), y = luaL_checknumber(L, 4);
   const double gx = luaL_optnumber(L, 7, x), gy = luaL_optnumber(L, 8, y);
-  lua_pushnumber(L, gx);
-  lua_pushnumber(L, gy);
+  lua_pushvalue(L, 7);  // the goal as given (nil stays nil, as in bump)
+  lua_pushvalue(L, 8);
   projectFrom(L, x, y, gx, gy);
   return 4;
 }
 
-// slide and bounce: the next goal from the touch point, written into col[field].
+// slide: the goal keeps its coordinate along the surface and takes the contact's on the
+// normal's axis (when the item moved at all); bounce: what is left of the move after the
+// contact, mirrored on the normal's axis (the contact itself when it did not move). Both write
+// col[field] and project from the contact.
 int redirect(lua_State* L, bool bounce) {
   luaL_checktype(L, 2, LUA_TTABLE);
   lua_settop(L, 9);
   const double x = luaL_checknumber(L, 3), y = luaL_checknumber(L, 4);
-  const double gx = luaL_optnumber(L, 7, x), gy = luaL_optnumber(L, 8, y);
+  double gx = luaL_optnumber(L, 7, x), gy = luaL_optnumber(L, 8, y);
   const double tx = fieldNumber(L, 2, "touch", "x"), ty = fieldNumber(L, 2, "touch", "y");
   const double mx = fieldNumber(L, 2, "move", "x"), my = fieldNumber(L, 2, "move", "y");
   const double nx = fieldNumber(L, 2, "normal", "x");
-  double sx = tx, sy = ty;
-  if (mx != 0 || my != 0) {
-    if (!bounce) {
-      // Keep the goal on the axis along the surface, the touch on the normal's axis.
-      if (nx == 0) sx = gx; else sy = gy;
-    } else {
-      // Reflect what is left of the move about the surface.
-      double bx = gx - tx, by = gy - ty;
-      if (nx == 0) by = -by; else bx = -bx;
-      sx = tx + bx;
-      sy = ty + by;
+  const bool moving = mx != 0 || my != 0;
+  if (!bounce) {
+    if (moving) {
+      if (nx != 0) {
+        gx = tx;
+      } else {
+        gy = ty;
+      }
     }
+  } else {
+    double bx = tx, by = ty;
+    if (moving) {
+      double dx = gx - tx, dy = gy - ty;
+      if (nx == 0) {
+        dy = -dy;
+      } else {
+        dx = -dx;
+      }
+      bx = tx + dx;
+      by = ty + dy;
+    }
+    gx = bx;
+    gy = by;
   }
   lua_createtable(L, 0, 2);
-  lua_pushnumber(L, sx);
+  lua_pushnumber(L, gx);
   lua_setfield(L, -2, "x");
-  lua_pushnumber(L, sy);
+  lua_pushnumber(L, gy);
   lua_setfield(L, -2, "y");
   lua_setfield(L, 2, bounce ? "bounce" : "slide");
-  lua_pushnumber(L, sx);
-  lua_pushnumber(L, sy);
-  projectFrom(L, tx, ty, sx, sy);
+  lua_pushnumber(L, gx);
+  lua_pushnumber(L, gy);
+  projectFrom(L, tx, ty, gx, gy);
   return 4;
 }
 

@@ -5,6 +5,7 @@
 #include <cinttypes>
 #include <cstdio>
 #include <string>
+#include <string_view>
 
 #include "boundary.hpp"
 #include "lua_world.hpp"
@@ -31,16 +32,32 @@ int go(lua_State* L) {
   ctx.filterIdx = hasFilter ? 5 : 0;
   ctx.slotToItem = 6;
   const tv::Rect before = w.world.rect(id);
+  ctx.bump = w.bumpRules && !w.mover;
+  ctx.item = id;
+  ctx.origin = before;
+  if (ctx.bump && w.luaResponses) {
+    lua_getfenv(L, 1);
+    if (hasFilter) {
+      lua_pushvalue(L, 5);
+    } else {
+      lua_pushboolean(L, 0);
+    }
+    lua_rawseti(L, -2, kFilter);
+    lua_pop(L, 1);
+  }
   tv::MoveResult r;
   {
     const CallScope scope(ctx);
     const Busy busy(w);
     const LuaFilter filter{&ctx};
-    r = w.mover ? w.mover->move(w.world, id, goal, filter) : w.world.move(id, goal, filter);
+    tv::MoveOptions options;
+    if (ctx.bump) options.semantics = tv::MoveSemantics::bump;
+    r = w.mover ? w.mover->move(w.world, id, goal, filter) : w.world.move(id, goal, filter, options);
   }
   w.last.assign(r.collisions.begin(), r.collisions.end());
   const tv::Rect after = before.at(r.position);
   moveCells(L, 1, w, id.index, &after);
+  touched(w);
   lua_pushnumber(L, r.position.x);
   lua_pushnumber(L, r.position.y);
   lua_pushinteger(L, static_cast<lua_Integer>(w.last.size()));
@@ -78,22 +95,32 @@ int getCollision(lua_State* L) {
   return pushFlat(L, lua_gettop(L), w.last[i]);
 }
 
+// world:setMover(name): "bump" (bump.lua's rules: a `tunnelvision.bump` world's own) or one
+// of the core's movers (tunnelvision.movers).
 int setMover(lua_State* L) {
   LuaWorld& w = checkWorld(L, 1);
   const char* name = luaL_checkstring(L, 2);
   checkNotBusy(L, w, "setMover");
+  if (std::string_view(name) == "bump") {
+    w.mover.reset();
+    w.bumpRules = true;
+    return 0;
+  }
   const tv::MoverSpec spec = tv::parseMover(name);  // tv::Error lists the names
   if (spec.kind == tv::MoverKind::continuous) {
     w.mover.reset();  // World::move is the continuous mover, without the indirection
   } else {
     w.mover = std::make_unique<tv::Mover>(spec);
   }
+  w.bumpRules = false;
   return 0;
 }
 
 int getMover(lua_State* L) {
   LuaWorld& w = checkWorld(L, 1);
-  const std::string name = w.mover ? w.mover->spec().name() : std::string("continuous");
+  const std::string name = w.bumpRules ? std::string("bump")
+                           : w.mover   ? w.mover->spec().name()
+                                       : std::string("continuous");
   lua_pushlstring(L, name.data(), name.size());
   return 1;
 }
@@ -148,6 +175,7 @@ int step(lua_State* L) {
     const tv::Rect after = w.starts[i].at(w.batch.outcome(i).position);
     moveCells(L, 1, w, w.moves[i].item.index, &after);
   }
+  touched(w);
   lua_pushinteger(L, static_cast<lua_Integer>(w.batch.size()));
   return 1;
 }

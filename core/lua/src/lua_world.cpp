@@ -141,39 +141,6 @@ std::size_t countBumpCells(lua_State* L, int worldIdx, LuaWorld& w) {
   return w.cells.occupied() + w.cells.pending();
 }
 
-namespace {
-// (item) -> label, category: run protected, since a field read or tostring may call metamethods.
-int itemLabel(lua_State* L) {
-  if (lua_istable(L, 1)) {
-    lua_getfield(L, 1, "name");
-    lua_getfield(L, 1, "kind");
-    if (lua_type(L, -2) == LUA_TSTRING) {
-      if (lua_type(L, -1) != LUA_TSTRING) {
-        lua_pop(L, 1);
-        lua_pushliteral(L, "");
-      }
-      return 2;
-    }
-    lua_pop(L, 2);
-  }
-  lua_getglobal(L, "tostring");
-  lua_pushvalue(L, 1);
-  lua_call(L, 1, 1);
-  lua_pushliteral(L, "");
-  return 2;
-}
-}  // namespace
-
-void labelItem(lua_State* L, LuaWorld& w, int itemIdx, tv::ItemId id) {
-  const int top = lua_gettop(L);
-  lua_pushcfunction(L, itemLabel);
-  lua_pushvalue(L, itemIdx);
-  const bool ok = lua_pcall(L, 1, 2, 0) == 0 && lua_isstring(L, -2) && lua_isstring(L, -1);
-  // A label is for the debugger's eyes: an item whose tostring fails is recorded unlabelled.
-  if (ok) w.recorder->label(id, lua_tostring(L, -2), lua_tostring(L, -1));
-  lua_settop(L, top);
-}
-
 // [SECTION] responses by name --------------------------------------------------------------------
 
 void pushResponseName(lua_State* L, int worldIdx, tv::ResponseId id) {
@@ -333,31 +300,82 @@ tv::Leg luaResponse(const tv::Collision& c, tv::Vec2 goal) {
     lua_pushvalue(L, -1);
     lua_rawseti(L, k->savedCols, k->responded + 1);
   }
-  lua_pushnumber(L, c.itemRect.x);
-  lua_pushnumber(L, c.itemRect.y);
-  lua_pushnumber(L, c.itemRect.w);
-  lua_pushnumber(L, c.itemRect.h);
+  // bump hands its responses the item's rect before the move (check's x,y,w,h); the core's
+  // responses see the leg's.
+  const tv::Rect& r = k->bump ? k->origin : c.itemRect;
+  lua_pushnumber(L, r.x);
+  lua_pushnumber(L, r.y);
+  lua_pushnumber(L, r.w);
+  lua_pushnumber(L, r.h);
   lua_pushnumber(L, goal.x);
   lua_pushnumber(L, goal.y);
-  if (k->filterIdx != 0) {
+  if (k->bump) {
+    pushEnv(L, k->worldIdx, kVisited);  // bump's visitedFilter
+  } else if (k->filterIdx != 0) {
     lua_pushvalue(L, k->filterIdx);
   } else {
     lua_pushnil(L);
   }
   ++k->responded;
-  if (lua_pcall(L, 9, 2, 0) != 0) throw LuaRaised{};
-  if (lua_type(L, -2) != LUA_TNUMBER || lua_type(L, -1) != LUA_TNUMBER) {
+  k->inResponse = true;
+  k->projected = false;
+  const int status = lua_pcall(L, 9, 4, 0);
+  k->inResponse = false;
+  if (status != 0) throw LuaRaised{};
+  if (lua_type(L, -4) != LUA_TNUMBER || lua_type(L, -3) != LUA_TNUMBER) {
     pushResponseName(L, k->worldIdx, c.response);
     const std::string name = lua_isstring(L, -1) ? lua_tostring(L, -1) : "?";
-    const std::string a = luaL_typename(L, -3), b = luaL_typename(L, -2);
-    lua_pop(L, 3);
+    const std::string a = luaL_typename(L, -5), b = luaL_typename(L, -4);
+    lua_pop(L, 5);
     throw tv::Error("response '" + name + "' must return goalX, goalY (numbers), but returned a " +
                     a + " and a " + b);
   }
-  const tv::Vec2 next{lua_tonumber(L, -2), lua_tonumber(L, -1)};
-  lua_pop(L, 2);
-  // bump.lua never meets an item twice in one move; the next leg starts at the contact.
+  const tv::Vec2 next{lua_tonumber(L, -4), lua_tonumber(L, -3)};
+  // bump goes on while the response returns collisions (its 4th value, or its list's length).
+  double more = 0;
+  if (lua_type(L, -1) == LUA_TNUMBER) {
+    more = lua_tonumber(L, -1);
+  } else if (lua_istable(L, -2)) {
+    more = static_cast<double>(lua_objlen(L, -2));
+  }
+  lua_pop(L, 4);
+  if (k->bump) {
+    // The next leg is the projection the response made (bump's `world:project` from where it
+    // chose), re-made by the core with the same rules; from the contact if it made none.
+    tv::Leg leg;
+    leg.start = k->projected ? k->projectedFrom : c.touch;
+    leg.goal = next;
+    leg.stop = !(more > 0);
+    return leg;
+  }
+  // The core's rules never meet an item twice through a response of Lua's; the next leg starts
+  // at the contact.
   return {c.touch, next, /*passThrough=*/true};
+}
+
+int visitedFilter(lua_State* L) {
+  LuaWorld& w = checkWorld(L, lua_upvalueindex(1));
+  lua_settop(L, 2);
+  pushEnv(L, lua_upvalueindex(1), kItemToSlot);  // 3
+  const std::int64_t slot = lua_isnil(L, 2) ? -1 : findSlot(L, 3, 2);
+  if (slot >= 0) {
+    const tv::ItemId other = w.world.idAt(static_cast<std::uint32_t>(slot));
+    for (const tv::ItemId met : w.world.metThisMove()) {
+      if (met == other) {
+        lua_pushboolean(L, 0);
+        return 1;
+      }
+    }
+  }
+  pushEnv(L, lua_upvalueindex(1), kFilter);  // 4
+  if (!lua_toboolean(L, 4)) {
+    lua_pushliteral(L, "slide");  // bump's default filter
+    return 1;
+  }
+  lua_pushvalue(L, 1);
+  lua_pushvalue(L, 2);
+  lua_call(L, 2, 1);
+  return 1;
 }
 
 // [SECTION] newWorld -----------------------------------------------------------------------------
@@ -386,37 +404,64 @@ const char* const kBuiltinNames[tv::response::kBuiltinCount] = {"touch", "cross"
 int newWorld(lua_State* L) {
   const double cellSize = optPositive(L, 1, "cellSize", 64.0);
   lua_settop(L, 0);
-  // The per-world field table: world.cellSize, and whatever code (spies) assigns; methods
-  // are found through its metatable (upvalue 1 is { __index = methods }).
-  lua_createtable(L, 0, 2);  // 1: fields
+  void* mem = lua_newuserdata(L, sizeof(LuaWorld));  // 1
+  new (mem) LuaWorld(cellSize);                      // throws only before it exists
+  auto& w = *static_cast<LuaWorld*>(mem);
+  w.bumpRules = lua_toboolean(L, lua_upvalueindex(3)) != 0;
+  // The per-world field table: the methods (copied, so a method call is one table lookup),
+  // world.cellSize, and whatever code (spies) assigns. Other keys go to readInternals: bump's
+  // rows, rects, nonEmptyCells and responses, built when read.
+  lua_createtable(L, 0, 40);  // 2: fields
+  lua_pushnil(L);
+  while (lua_next(L, lua_upvalueindex(1)) != 0) {
+    lua_pushvalue(L, -2);
+    lua_insert(L, -2);
+    lua_rawset(L, 2);
+  }
   lua_pushnumber(L, cellSize);
-  lua_setfield(L, 1, "cellSize");
-  lua_pushvalue(L, lua_upvalueindex(1));
-  lua_setmetatable(L, 1);
-  lua_createtable(L, 0, 5);  // 2: the world's metatable
+  lua_setfield(L, 2, "cellSize");
+  lua_createtable(L, 0, 1);
   lua_pushvalue(L, 1);
-  lua_setfield(L, 2, "__index");
-  lua_pushvalue(L, 1);
-  lua_setfield(L, 2, "__newindex");
+  lua_pushcclosure(L, guarded<readInternals>, 1);
+  lua_setfield(L, -2, "__index");
+  lua_setmetatable(L, 2);
+  lua_createtable(L, 0, 4);  // 3: the world's metatable
+  lua_pushvalue(L, 2);
+  lua_setfield(L, 3, "__index");
+  lua_pushvalue(L, 2);
+  lua_setfield(L, 3, "__newindex");
   lua_pushcfunction(L, worldGc);
-  lua_setfield(L, 2, "__gc");
+  lua_setfield(L, 3, "__gc");
   lua_pushcfunction(L, worldToString);
-  lua_setfield(L, 2, "__tostring");
-  lua_createtable(L, kEnvSize, 0);  // 3: env
+  lua_setfield(L, 3, "__tostring");
+  lua_pushvalue(L, 3);
+  lua_setmetatable(L, 1);
+  lua_createtable(L, kEnvSize, 0);  // 4: env
   for (int i = 1; i < kKeys; ++i) {
     lua_newtable(L);
-    lua_rawseti(L, 3, i);
+    lua_rawseti(L, 4, i);
   }
   lua_pushvalue(L, lua_upvalueindex(2));
-  lua_rawseti(L, 3, kKeys);
-  lua_rawgeti(L, 3, kSentinel);
+  lua_rawseti(L, 4, kKeys);
+  lua_newtable(L);
+  lua_rawseti(L, 4, kInternals);
+  lua_pushboolean(L, 0);
+  lua_rawseti(L, 4, kFilter);
+  lua_pushvalue(L, 1);
+  lua_pushcclosure(L, guarded<visitedFilter>, 1);
+  lua_rawseti(L, 4, kVisited);
+  lua_newtable(L);
+  lua_rawseti(L, 4, kSerials);
+  lua_pushvalue(L, lua_upvalueindex(4));
+  lua_rawseti(L, 4, kBumpResponses);
+  lua_rawgeti(L, 4, kSentinel);
   lua_createtable(L, 0, 1);
   lua_pushliteral(L, "v");
   lua_setfield(L, -2, "__mode");
   lua_setmetatable(L, -2);
   lua_pop(L, 1);
-  lua_rawgeti(L, 3, kNameToId);
-  lua_rawgeti(L, 3, kIdToName);
+  lua_rawgeti(L, 4, kNameToId);
+  lua_rawgeti(L, 4, kIdToName);
   for (int i = 0; i < tv::response::kBuiltinCount; ++i) {
     lua_pushstring(L, kBuiltinNames[i]);
     lua_pushnumber(L, i);
@@ -425,13 +470,11 @@ int newWorld(lua_State* L) {
     lua_rawseti(L, -2, i);
   }
   lua_pop(L, 2);
-
-  void* mem = lua_newuserdata(L, sizeof(LuaWorld));  // 4
-  new (mem) LuaWorld(cellSize);                      // throws only before it exists
-  lua_pushvalue(L, 2);
-  lua_setmetatable(L, 4);
-  lua_pushvalue(L, 3);
-  lua_setfenv(L, 4);
+  lua_pushvalue(L, 4);
+  lua_setfenv(L, 1);
+  lua_settop(L, 1);
+  recordIfAsked(L, 1, w);
+  lua_settop(L, 1);
   return 1;
 }
 

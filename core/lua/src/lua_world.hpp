@@ -29,7 +29,12 @@ enum Env : int {
   kIdToName = 6,     // core ResponseId -> the name Lua knows it by
   kSavedCols = 7,    // during a move: collision tables a Lua response saw, by collision index
   kKeys = 8,         // the collision tables' field names, interned once (see Key)
-  kEnvSize = 8
+  kInternals = 9,    // bump's internal tables as last read (internals.cpp): rows, rects...
+  kFilter = 10,      // during a move with bump's rules: its filter (false: none), for kVisited
+  kVisited = 11,     // bump's `visitedFilter`, handed to responses added from Lua
+  kSerials = 12,     // label base -> how many items got it (labels.cpp)
+  kBumpResponses = 13,  // the module's bump.responses table (world.responses' built-ins)
+  kEnvSize = 13
 };
 
 // Field names of a collision table, by index in env[kKeys]: setting fields with keys already
@@ -80,6 +85,12 @@ struct LuaWorld {
 
   std::uint64_t magic = kMagic;
   tv::World world;
+  /// bump.lua's rules for move, check, project and the queries (`tunnelvision.bump` worlds);
+  /// false: the core's (`tunnelvision` worlds, or after setMover).
+  bool bumpRules = true;
+  /// Counts changes to items, so that bump's internal tables are rebuilt only when read after
+  /// one (internals.cpp).
+  std::uint64_t version = 0;
   std::unique_ptr<tv::Mover> mover;  // null: World::move, the exact continuous move
   tv::Batch batch;
   BumpCells cells;
@@ -95,14 +106,18 @@ struct LuaWorld {
   std::size_t scratchDepth = 0;
   std::vector<tv::Rect> starts;      // the batch step's bodies, before it
   bool luaResponses = false;         // a response was added from Lua
+  int recordNumber = 0;              // automatic recording: which file this world writes (1...)
+  bool framesByLove = false;         // ... whose frames love.run's steps mark (world:frame waits)
   tv::ResponseId slide = tv::response::slide;  // what 'slide' names: the answer without a filter
   int busy = 0;  // > 0 while one of this world's filters or responses runs
   std::unique_ptr<tv::Recorder> recorder;  // declared last, destroyed first: it detaches
 };
 
-/// While recording: names the item at `itemIdx` (handle `id`) for the debugger, from its `name`
-/// field (a table's, when a string) or tostring, with its `kind` field as the category.
-void labelItem(lua_State* L, LuaWorld& w, int itemIdx, tv::ItemId id);
+/// While recording: names the item at `itemIdx` (handle `id`) for the debugger (labels.cpp):
+/// its `name` field, else its class's name and a serial ("Guardian 3"), else its
+/// `type`/`kind`/`class` string field and a serial, else its Lua type and a serial
+/// ("table 17"); the category from the class or those fields. Never an address.
+void labelItem(lua_State* L, int worldIdx, LuaWorld& w, int itemIdx, tv::ItemId id);
 
 /// Borrows the world's scratch for one call; the next nested call gets the next one.
 class Lease {
@@ -178,6 +193,14 @@ struct CallContext {
   int slotToItem = 0;
   int savedCols = 0;  // 0: collision tables the responses see are not kept
   int responded = 0;  // responses run so far in this call
+  // A move with bump's rules: the item's rect before it (what bump's responses receive as
+  // x,y,w,h), and, while a response added from Lua runs, where it last projected the item from.
+  bool bump = false;
+  tv::ItemId item;  // the mover, when it is in the world
+  tv::Rect origin;
+  bool inResponse = false;
+  bool projected = false;
+  tv::Vec2 projectedFrom;
   CallContext* outer = nullptr;
 };
 CallContext* currentCall();
@@ -207,10 +230,28 @@ void registerWorldMethods(lua_State* L, int methodsIdx);   // bump's World API
 void registerExtraMethods(lua_State* L, int methodsIdx);   // tunnelvision's additions
 void registerRecordingMethods(lua_State* L, int methodsIdx);  // startRecording, frame...
 void pushValidateRecording(lua_State* L);                     // tunnelvision.validateRecording
+void pushRecordingItems(lua_State* L);                        // tunnelvision.recordingItems
 void pushRectFunctions(lua_State* L);                      // bump.rect
 void pushResponseFunctions(lua_State* L);                  // bump.responses
-/// newWorld(cellSize): upvalue 1 is the methods table.
+/// newWorld(cellSize): upvalue 1 is the methods table, 2 the collision keys, 3 true for bump's
+/// rules, 4 the module's bump.responses.
 int newWorld(lua_State* L);
+/// The __index of a world's field table, for keys that are not methods: bump's `rows`,
+/// `rects`, `nonEmptyCells` and `responses`, built when read (internals.cpp). Upvalue 1 is the
+/// world.
+int readInternals(lua_State* L);
+/// Marks the world changed: its internal tables are rebuilt at their next read.
+inline void touched(LuaWorld& w) { ++w.version; }
+/// bump's `visitedFilter(item, other)` for the move that runs now (upvalue 1: the world).
+int visitedFilter(lua_State* L);
+/// Automatic recording (autorecord.cpp): starts recording a new world when `record` or
+/// TV_RECORD asked for every world to be recorded. The world is at `worldIdx`.
+void recordIfAsked(lua_State* L, int worldIdx, LuaWorld& w);
+/// Puts `record`, `frame` and `stopRecording` into the `tunnelvision` table at moduleIdx.
+void pushAutoRecord(lua_State* L, int moduleIdx);
+/// TV_RECORD: turns automatic recording on (once per Lua state) when the variable is set; a
+/// path that cannot be written is reported on stderr in one line, and the game runs on.
+void recordFromEnvironment(lua_State* L);
 bool isBuiltinResponse(lua_CFunction f, tv::ResponseId& id);
 
 }  // namespace tvlua

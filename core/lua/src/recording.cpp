@@ -37,7 +37,7 @@ int startRecording(lua_State* L) {
   w.world.forEachItem([&](tv::ItemId id, const tv::Rect&) { ids.push_back(id); });
   for (const tv::ItemId id : ids) {
     lua_rawgeti(L, items, static_cast<int>(id.index) + 1);
-    labelItem(L, w, lua_gettop(L), id);
+    labelItem(L, 1, w, lua_gettop(L), id);
     lua_pop(L, 1);
   }
   return 0;
@@ -55,6 +55,7 @@ int stopRecording(lua_State* L) {
   const double calls = static_cast<double>(w.recorder->calls());
   const double size = static_cast<double>(w.recorder->size());
   w.recorder.reset();
+  w.framesByLove = false;
   if (!ok) {
     lua_pushnil(L);
     lua_pushlstring(L, error.data(), error.size());
@@ -66,10 +67,11 @@ int stopRecording(lua_State* L) {
   return 3;
 }
 
-// world:frame(): one rendered frame ends (a no-op when not recording, so games call it always).
+// world:frame(): one rendered frame ends (a no-op when not recording, so games call it always;
+// and under LÖVE with TV_RECORD, where each step of love.run ends one already).
 int frame(lua_State* L) {
   LuaWorld& w = checkWorld(L, 1);
-  if (w.recorder) w.recorder->frame();
+  if (w.recorder && !w.framesByLove) w.recorder->frame();
   return 0;
 }
 
@@ -113,9 +115,42 @@ int validateRecording(lua_State* L) {
   return 2;
 }
 
+// tunnelvision.recordingItems(path) -> { {label=, category=, moves=, hits=}, ... }: the items a
+// recording names, in the order they appear (what tv-debugger lists).
+int recordingItems(lua_State* L) {
+  const char* path = luaL_checkstring(L, 1);
+  struct Item {
+    std::string label, category;
+    double moves, hits;
+  };
+  std::vector<Item> items;
+  {
+    const tv::Replay replay = tv::Replay::open(path);  // tv::Error names the byte offset
+    for (const tv::RecordedItem& i : replay.items()) {
+      items.push_back({i.label, i.category, static_cast<double>(i.moves), static_cast<double>(i.hits)});
+    }
+  }
+  lua_createtable(L, static_cast<int>(items.size()), 0);
+  int n = 0;
+  for (const Item& i : items) {
+    lua_createtable(L, 0, 4);
+    lua_pushlstring(L, i.label.data(), i.label.size());
+    lua_setfield(L, -2, "label");
+    lua_pushlstring(L, i.category.data(), i.category.size());
+    lua_setfield(L, -2, "category");
+    lua_pushnumber(L, i.moves);
+    lua_setfield(L, -2, "moves");
+    lua_pushnumber(L, i.hits);
+    lua_setfield(L, -2, "hits");
+    lua_rawseti(L, -2, ++n);
+  }
+  return 1;
+}
+
 }  // namespace
 
 void pushValidateRecording(lua_State* L) { lua_pushcfunction(L, guarded<validateRecording>); }
+void pushRecordingItems(lua_State* L) { lua_pushcfunction(L, guarded<recordingItems>); }
 
 void registerRecordingMethods(lua_State* L, int methodsIdx) {
   const luaL_Reg methods[] = {

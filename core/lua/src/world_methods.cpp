@@ -9,6 +9,7 @@
 
 #include "boundary.hpp"
 #include "lua_world.hpp"
+#include "tv/bump.hpp"
 #include "tv/sweep.hpp"
 
 namespace tvlua {
@@ -60,7 +61,8 @@ int add(lua_State* L) {
   lua_pushvalue(L, 2);
   lua_rawseti(L, -2, static_cast<int>(id.index) + 1);
   moveCells(L, 1, w, id.index, &r);
-  if (w.recorder) labelItem(L, w, 2, id);
+  touched(w);
+  if (w.recorder) labelItem(L, 1, w, 2, id);
   lua_settop(L, 2);
   return 1;
 }
@@ -79,6 +81,7 @@ int remove(lua_State* L) {
   lua_pushnil(L);
   lua_rawseti(L, -2, static_cast<int>(id.index) + 1);
   moveCells(L, 1, w, id.index, nullptr);
+  touched(w);
   return 0;
 }
 
@@ -93,6 +96,7 @@ int update(lua_State* L) {
   if (r == old) return 0;
   w.world.update(id, r);
   moveCells(L, 1, w, id.index, &r);
+  touched(w);
   return 0;
 }
 
@@ -191,6 +195,20 @@ MoveCall prepareMove(lua_State* L, const char* what) {
   m.ctx.itemIdx = 2;
   m.ctx.filterIdx = hasFilter ? 5 : 0;
   m.ctx.slotToItem = 6;
+  m.ctx.bump = w.bumpRules && !w.mover;
+  m.ctx.origin = w.world.rect(id);
+  m.ctx.item = id;
+  if (m.ctx.bump && w.luaResponses) {
+    // bump's visitedFilter, which responses added from Lua receive, calls this move's filter.
+    lua_getfenv(L, 1);
+    if (hasFilter) {
+      lua_pushvalue(L, 5);
+    } else {
+      lua_pushboolean(L, 0);
+    }
+    lua_rawseti(L, -2, kFilter);
+    lua_pop(L, 1);
+  }
   return m;
 }
 
@@ -231,17 +249,20 @@ int moveOrCheck(lua_State* L, bool commit) {
     const CallScope scope(m.ctx);
     const Busy busy(w);
     const LuaFilter filter{&m.ctx};
+    tv::MoveOptions options;
+    if (m.ctx.bump) options.semantics = tv::MoveSemantics::bump;
     if (!commit) {
-      r = w.world.check(m.id, m.goal, filter);
+      r = w.world.check(m.id, m.goal, filter, options);
     } else if (w.mover) {
       r = w.mover->move(w.world, m.id, m.goal, filter);
     } else {
-      r = w.world.move(m.id, m.goal, filter);
+      r = w.world.move(m.id, m.goal, filter, options);
     }
   }
   if (commit) {
     const tv::Rect after = before.at(r.position);
     moveCells(L, 1, w, m.id.index, &after);
+    touched(w);
   }
   lua_pushnumber(L, r.position.x);
   lua_pushnumber(L, r.position.y);
@@ -274,6 +295,31 @@ int project(lua_State* L) {
   ctx.itemIdx = lua_isnil(L, 2) ? 0 : 2;
   ctx.filterIdx = hasFilter ? 9 : 0;
   ctx.slotToItem = 10;
+  if (w.bumpRules) {
+    // A response added from Lua, projecting its item inside a move: where it projects from is
+    // where the move's next leg starts.
+    CallContext* outer = currentCall();
+    if (outer != nullptr && outer->inResponse && outer->world == &w && self.valid() &&
+        self == outer->item) {
+      outer->projected = true;
+      outer->projectedFrom = r.position();
+    }
+    Lease s(w);
+    {
+      const CallScope scope(ctx);
+      const Busy busy(w);
+      const LuaFilter filter{&ctx};
+      tv::bump::project(w.world, self, r, goal, filter, {}, s->cols);
+    }
+    lua_createtable(L, static_cast<int>(s->cols.size()), 0);
+    int n = 0;
+    for (const tv::Collision& c : s->cols) {
+      pushCollision(L, 1, 10, ctx.itemIdx, c, false);
+      lua_rawseti(L, -2, ++n);
+    }
+    lua_pushinteger(L, n);
+    return 2;
+  }
   {
     Lease s(w);
     {
@@ -349,7 +395,12 @@ int queryPoint(lua_State* L) {
   lua_newtable(L);             // 6
   int n = 0;
   {
-    const std::vector<tv::ItemId> found = w.world.queryPoint(p);
+    std::vector<tv::ItemId> found;
+    if (w.bumpRules) {
+      tv::bump::queryPoint(w.world, p, found);
+    } else {
+      found = w.world.queryPoint(p);
+    }
     for (const tv::ItemId id : found) {
       if (!queryAccepts(L, filterIdx, 5, id)) continue;
       lua_rawgeti(L, 5, static_cast<int>(id.index) + 1);
@@ -370,7 +421,12 @@ int querySegmentImpl(lua_State* L, bool withCoords) {
   lua_newtable(L);             // 8
   int n = 0;
   {
-    const std::vector<tv::SegmentHit> hits = w.world.querySegment(a, b);
+    std::vector<tv::SegmentHit> hits;
+    if (w.bumpRules) {
+      tv::bump::querySegment(w.world, a, b, hits);
+    } else {
+      hits = w.world.querySegment(a, b);
+    }
     for (const tv::SegmentHit& h : hits) {
       if (!queryAccepts(L, filterIdx, 7, h.item)) continue;
       if (!withCoords) {

@@ -7,6 +7,7 @@
 // checked against them before anything is allocated, and every failure throws tv::Error naming
 // the byte offset and the frame.
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -22,31 +23,68 @@ namespace tv::rec {
 
 // -- writing ----------------------------------------------------------------------------------
 
-struct Out {
-  std::vector<std::uint8_t> b;
+// A growing byte buffer written without a capacity test per byte: each writer asks for the room
+// it needs once (varint: 10 bytes, a Group: 33), then stores through a pointer.
+class Out {
+ public:
+  [[nodiscard]] std::size_t size() const { return n_; }
+  [[nodiscard]] const std::uint8_t* data() const { return buf_.data(); }
+  [[nodiscard]] std::uint8_t& at(std::size_t i) { return buf_[i]; }
+  void clear() { n_ = 0; }
+  void reserve(std::size_t n) {
+    if (buf_.size() < n) buf_.resize(n);
+  }
+  [[nodiscard]] std::vector<std::uint8_t> bytes() const { return {buf_.data(), buf_.data() + n_}; }
 
-  void u8(std::uint8_t v) { b.push_back(v); }
+  void room(std::size_t k) {
+    if (buf_.size() - n_ < k) grow(k);
+  }
+  void u8(std::uint8_t v) {
+    room(1);
+    buf_[n_++] = v;
+  }
   void u32(std::uint32_t v) {
-    for (int i = 0; i < 4; ++i) b.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    room(4);
+    for (int i = 0; i < 4; ++i) buf_[n_++] = static_cast<std::uint8_t>(v >> (8 * i));
   }
   void u64(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) b.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    room(8);
+    for (int i = 0; i < 8; ++i) buf_[n_++] = static_cast<std::uint8_t>(v >> (8 * i));
   }
   void f64(double v) { u64(std::bit_cast<std::uint64_t>(v)); }
   void varint(std::uint64_t v) {
+    room(10);
+    std::uint8_t* p = buf_.data() + n_;
+    std::uint8_t* const start = p;
     while (v >= 0x80) {
-      b.push_back(static_cast<std::uint8_t>(v | 0x80));
+      *p++ = static_cast<std::uint8_t>(v | 0x80);
       v >>= 7;
     }
-    b.push_back(static_cast<std::uint8_t>(v));
+    *p++ = static_cast<std::uint8_t>(v);
+    n_ += static_cast<std::size_t>(p - start);
   }
   void zigzag(std::int64_t v) {
     varint((static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63));
   }
   void str(std::string_view s) {
     varint(s.size());
-    b.insert(b.end(), s.begin(), s.end());
+    room(s.size());
+    if (!s.empty()) std::memcpy(buf_.data() + n_, s.data(), s.size());
+    n_ += s.size();
   }
+  void raw(const void* data, std::size_t n) {
+    room(n);
+    if (n) std::memcpy(buf_.data() + n_, data, n);
+    n_ += n;
+  }
+
+ private:
+  friend class Group;
+  [[gnu::noinline]] void grow(std::size_t k) {
+    buf_.resize(std::max(buf_.size() * 2, n_ + k + 256));
+  }
+  std::vector<std::uint8_t> buf_;
+  std::size_t n_ = 0;
 };
 
 [[nodiscard]] inline bool sameBits(double a, double b) {
@@ -60,7 +98,11 @@ enum : std::uint8_t { kP0 = 0, kP1 = 1, kF32 = 2, kF64 = 3 };
 // (the reader decodes in the same order).
 class Group {
  public:
-  explicit Group(Out& o) : o_(o), at_(o.b.size()) { o.b.push_back(0); }
+  // Room for the code byte and four f64 values, so that put() never tests the capacity.
+  explicit Group(Out& o) : o_(o), at_(o.n_) {
+    o.room(33);
+    o.buf_[o.n_++] = 0;
+  }
   // Most values are their first prediction: code 0, nothing to write.
   void put(double v, double p0, double p1, double base = 0.0) {
     if (sameBits(v, p0)) {
@@ -85,12 +127,15 @@ class Group {
         if (sameBits(static_cast<double>(f), d) && sameBits(base + static_cast<double>(f), v)) {
           code = kF32;
           std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
-          for (int i = 0; i < 4; ++i) o_.b.push_back(static_cast<std::uint8_t>(bits >> (8 * i)));
+          for (int i = 0; i < 4; ++i) o_.buf_[o_.n_++] = static_cast<std::uint8_t>(bits >> (8 * i));
         }
       }
-      if (code == kF64) o_.f64(v);
+      if (code == kF64) {
+        const auto bits = std::bit_cast<std::uint64_t>(v);
+        for (int i = 0; i < 8; ++i) o_.buf_[o_.n_++] = static_cast<std::uint8_t>(bits >> (8 * i));
+      }
     }
-    o_.b[at_] = static_cast<std::uint8_t>(o_.b[at_] | (code << (2 * n_)));
+    o_.buf_[at_] = static_cast<std::uint8_t>(o_.buf_[at_] | (code << (2 * n_)));
     ++n_;
   }
 
@@ -117,29 +162,30 @@ class In {
   void setFrame(std::uint64_t f) { frame_ = f; }
 
   [[noreturn]] void fail(std::string_view what) const { failAt(offset(), what); }
-  [[noreturn]] void failAt(std::uint64_t at, std::string_view what) const {
+  [[noreturn, gnu::cold, gnu::noinline]] void failAt(std::uint64_t at,
+                                                     std::string_view what) const {
     tv::fail("tv::Replay", "byte " + std::to_string(at) + " (frame " + std::to_string(frame_) +
                                "): " + std::string(what));
   }
 
-  void need(std::size_t n, std::string_view what) const {
-    if (left() < n) {
-      fail(std::string(what) + " needs " + std::to_string(n) + " bytes, only " +
-           std::to_string(left()) + " left in the chunk");
-    }
+  // Every read below is a bounds test inline and, when it fails, a call to a cold function
+  // that builds the message: a whole recording is read at a few instructions per byte.
+  [[gnu::always_inline]] void need(std::size_t n, std::string_view what) const {
+    if (left() < n) [[unlikely]]
+      failNeed(n, what);
   }
-  std::uint8_t u8(std::string_view what) {
+  [[gnu::always_inline]] std::uint8_t u8(std::string_view what) {
     need(1, what);
     return *p_++;
   }
-  std::uint32_t u32(std::string_view what) {
+  [[gnu::always_inline]] std::uint32_t u32(std::string_view what) {
     need(4, what);
     std::uint32_t v = 0;
     for (int i = 0; i < 4; ++i) v |= std::uint32_t{p_[i]} << (8 * i);
     p_ += 4;
     return v;
   }
-  std::uint64_t u64(std::string_view what) {
+  [[gnu::always_inline]] std::uint64_t u64(std::string_view what) {
     need(8, what);
     std::uint64_t v = 0;
     for (int i = 0; i < 8; ++i) v |= std::uint64_t{p_[i]} << (8 * i);
@@ -147,25 +193,18 @@ class In {
     return v;
   }
   // A double that must be finite (every value tv records is).
-  double f64(std::string_view what) {
-    const std::uint64_t at = offset();
+  [[gnu::always_inline]] double f64(std::string_view what) {
     const double v = std::bit_cast<double>(u64(what));
-    if (!std::isfinite(v)) failAt(at, std::string(what) + " is " + tv::formatNumber(v));
+    if (!std::isfinite(v)) [[unlikely]]
+      failValue(offset() - 8, what, v);
     return v;
   }
-  std::uint64_t varint(std::string_view what) {
-    const std::uint64_t at = offset();
-    std::uint64_t v = 0;
-    for (int shift = 0; shift < 64; shift += 7) {
-      if (p_ == end_) failAt(at, std::string(what) + ": varint cut by the end of the chunk");
-      const std::uint8_t byte = *p_++;
-      if (shift == 63 && byte > 1) failAt(at, std::string(what) + ": varint over 64 bits");
-      v |= std::uint64_t{byte & 0x7Fu} << shift;
-      if ((byte & 0x80) == 0) return v;
-    }
-    failAt(at, std::string(what) + ": varint over 64 bits");
+  [[gnu::always_inline]] std::uint64_t varint(std::string_view what) {
+    if (p_ != end_ && *p_ < 0x80) [[likely]]
+      return *p_++;  // most are one byte
+    return varintLong(what);
   }
-  std::int64_t zigzag(std::string_view what) {
+  [[gnu::always_inline]] std::int64_t zigzag(std::string_view what) {
     const std::uint64_t u = varint(what);
     return static_cast<std::int64_t>(u >> 1) ^ -static_cast<std::int64_t>(u & 1);
   }
@@ -196,8 +235,29 @@ class In {
     return s;
   }
 
+  [[noreturn, gnu::cold, gnu::noinline]] void failValue(std::uint64_t at, std::string_view what,
+                                                        double v) const {
+    failAt(at, std::string(what) + " is " + tv::formatNumber(v));
+  }
+
  private:
   friend class GroupIn;
+  [[noreturn, gnu::cold, gnu::noinline]] void failNeed(std::size_t n, std::string_view what) const {
+    fail(std::string(what) + " needs " + std::to_string(n) + " bytes, only " +
+         std::to_string(left()) + " left in the chunk");
+  }
+  [[gnu::noinline]] std::uint64_t varintLong(std::string_view what) {
+    const std::uint64_t at = offset();
+    std::uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      if (p_ == end_) failAt(at, std::string(what) + ": varint cut by the end of the chunk");
+      const std::uint8_t byte = *p_++;
+      if (shift == 63 && byte > 1) failAt(at, std::string(what) + ": varint over 64 bits");
+      v |= std::uint64_t{byte & 0x7Fu} << shift;
+      if ((byte & 0x80) == 0) return v;
+    }
+    failAt(at, std::string(what) + ": varint over 64 bits");
+  }
   const std::uint8_t* p_ = nullptr;
   const std::uint8_t* begin_ = nullptr;
   const std::uint8_t* end_ = nullptr;
@@ -207,35 +267,32 @@ class In {
 
 class GroupIn {
  public:
-  GroupIn(In& in, std::string_view what) : in_(in), what_(what), codes_(in.u8(what)) {}
-  double get(double p0, double p1, double base = 0.0) {
-    const auto code =
-        static_cast<std::uint8_t>((static_cast<unsigned>(codes_) >> (2u * n_++)) & 3u);
-    const std::uint64_t at = in_.offset();
+  [[gnu::always_inline]] GroupIn(In& in, std::string_view what)
+      : in_(in), what_(what), codes_(in.u8(what)) {}
+  [[gnu::always_inline]] double get(double p0, double p1, double base = 0.0) {
+    const unsigned code = codes_ & 3u;
+    codes_ >>= 2;
     double v;
-    switch (code) {
-      case kP0:
-        v = p0;
-        break;
-      case kP1:
-        v = p1;
-        break;
-      case kF32:
-        v = base + static_cast<double>(std::bit_cast<float>(in_.u32(what_)));
-        break;
-      default:
-        return in_.f64(what_);
+    if (code == kP0) [[likely]] {
+      v = p0;
+    } else if (code == kP1) {
+      v = p1;
+    } else if (code == kF32) {
+      v = base + static_cast<double>(std::bit_cast<float>(in_.u32(what_)));
+    } else {
+      return in_.f64(what_);
     }
     // A prediction or a sum can overflow where the recorder's value could not have.
-    if (!std::isfinite(v)) in_.failAt(at, std::string(what_) + " is " + tv::formatNumber(v));
+    if (!std::isfinite(v)) [[unlikely]] {
+      in_.failValue(in_.offset() - (code == kF32 ? 4 : 0), what_, v);
+    }
     return v;
   }
 
  private:
   In& in_;
   std::string_view what_;
-  std::uint8_t codes_;
-  unsigned n_ = 0;
+  unsigned codes_;
 };
 
 }  // namespace tv::rec

@@ -3,8 +3,14 @@
 
 #include "format.hpp"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <type_traits>
+
+#include "tv/bump.hpp"
 
 namespace tv::rec {
 
@@ -64,6 +70,22 @@ bool answersByPair(std::span<const Answer> answers) {
     }
   }
   return true;
+}
+
+std::array<std::uint8_t, kHeaderSize> fileHeader(double cellSize, std::uint32_t keyframeEvery) {
+  Out h;
+  for (const char c : kMagic) h.u8(static_cast<std::uint8_t>(c));
+  h.u8(static_cast<std::uint8_t>(kVersionMajor & 0xFF));
+  h.u8(static_cast<std::uint8_t>(kVersionMajor >> 8));
+  h.u8(static_cast<std::uint8_t>(kVersionMinor & 0xFF));
+  h.u8(static_cast<std::uint8_t>(kVersionMinor >> 8));
+  h.f64(cellSize);
+  h.u32(keyframeEvery);
+  h.u32(0);  // flags, none yet
+  h.u32(static_cast<std::uint32_t>(::crc32(0, h.data(), static_cast<uInt>(h.size()))));
+  std::array<std::uint8_t, kHeaderSize> out{};
+  std::memcpy(out.data(), h.data(), kHeaderSize);
+  return out;
 }
 
 // [SECTION] model --------------------------------------------------------------------------------
@@ -168,9 +190,9 @@ void Encoder::add(ItemId, const Rect& r) {
 }
 
 void Encoder::remove(ItemId id) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::remove));
-  out.b[at] |= item(id.index);
+  out.at(at) |= item(id.index);
   Model::Slot& s = model.slots[id.index];
   model.cells -= std::min(model.cells, cellCount(model.cellSize, s.rect));
   s.alive = false;
@@ -179,9 +201,9 @@ void Encoder::remove(ItemId id) {
 }
 
 void Encoder::update(ItemId id, const Rect& r) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::update));
-  out.b[at] |= item(id.index);
+  out.at(at) |= item(id.index);
   Model::Slot& s = model.slots[id.index];
   Group g(out);
   g.put(r.x, s.rect.x + s.lastDelta.x, s.rect.x, s.rect.x);
@@ -299,7 +321,7 @@ void Encoder::legBlock(std::span<const Leg> legs) {
   out.varint(legs.size());
   Leg prev;
   for (const Leg& l : legs) {
-    out.u8(l.passThrough ? 1 : 0);
+    out.u8(static_cast<std::uint8_t>((l.passThrough ? 1 : 0) | (l.stop ? 2 : 0)));
     Group g(out);
     g.put(l.start.x, prev.goal.x, prev.start.x);
     g.put(l.start.y, prev.goal.y, prev.start.y);
@@ -312,11 +334,12 @@ void Encoder::legBlock(std::span<const Leg> legs) {
 void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
                    const MoveResult& r, std::span<const Answer> answers,
                    std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(kind));
   std::uint8_t flags = item(id.index);
   std::uint8_t extras = static_cast<std::uint8_t>(
       (o.broad == BroadPhase::bounds ? kBounds : 0) |
+      (o.semantics == MoveSemantics::bump ? kBump : 0) |
       (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
       (!legs.empty() ? kHasLegs : 0));
   Model::Slot& s = model.slots[id.index];
@@ -329,7 +352,7 @@ void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
     if (extras & kLimit) out.varint(static_cast<std::uint64_t>(o.maxResponses));
   }
   if (free) flags |= kFree;
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   goal(s, goalPos);
   const Vec2 d = goalPos - start.position();
   if (sameBits(start.x + d.x, goalPos.x) && sameBits(start.y + d.y, goalPos.y)) s.lastDelta = d;
@@ -342,7 +365,7 @@ void Encoder::move(CallKind kind, ItemId id, Vec2 goalPos, const MoveOptions& o,
 void Encoder::moverMove(std::uint32_t mover, bool define, const MoverSpec& spec, ItemId id,
                         const Rect& start, Vec2 goalPos, const MoveResult& r,
                         std::span<const Answer> answers, std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::moverMove));
   std::uint8_t flags = item(id.index);
   out.varint(mover);
@@ -362,7 +385,7 @@ void Encoder::moverMove(std::uint32_t mover, bool define, const MoverSpec& spec,
   const bool free = r.collisions.empty() && sameBits(r.position.x, goalPos.x) &&
                     sameBits(r.position.y, goalPos.y);
   if (free) flags |= kFree;
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   Model::Slot& s = model.slots[id.index];
   (void)start;  // the model holds it (the recorder checks they agree)
   goal(s, goalPos);
@@ -376,11 +399,12 @@ void Encoder::moverMove(std::uint32_t mover, bool define, const MoverSpec& spec,
 
 void Encoder::project(const Rect& rect, Vec2 goalPos, const MoveOptions& o, const MoveResult& r,
                       std::span<const Answer> answers, std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::project));
   std::uint8_t flags = 0;
   const std::uint8_t extras = static_cast<std::uint8_t>(
       (o.broad == BroadPhase::bounds ? kBounds : 0) |
+      (o.semantics == MoveSemantics::bump ? kBump : 0) |
       (o.maxResponses != kDefaultMaxResponses ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
       (!legs.empty() ? kHasLegs : 0));
   if (extras) {
@@ -391,7 +415,7 @@ void Encoder::project(const Rect& rect, Vec2 goalPos, const MoveOptions& o, cons
   const bool free = r.collisions.empty() && sameBits(r.position.x, goalPos.x) &&
                     sameBits(r.position.y, goalPos.y);
   if (free) flags |= kFree;
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   {
     Group g(out);
     g.put(rect.x, 0, 0);
@@ -421,11 +445,11 @@ void foundList(Out& out, std::span<const ItemId> found, std::uint32_t base) {
 }  // namespace
 
 void Encoder::queryRect(const Rect& r, ItemId skip, std::span<const ItemId> found) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::queryRect));
   Rect p;
   if (skip.valid()) {
-    out.b[at] |= static_cast<std::uint8_t>(kSkipValid | item(skip.index));
+    out.at(at) |= static_cast<std::uint8_t>(kSkipValid | item(skip.index));
     p = model.slots[skip.index].rect;
   }
   Group g(out);
@@ -470,7 +494,7 @@ void Encoder::querySegment(Vec2 a, Vec2 b, std::span<const SegmentHit> hits) {
 }
 
 void Encoder::anyOverlap(const Rect& r, ItemId skip, bool any, std::span<const Answer> answers) {
-  const std::size_t at = out.b.size();
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::anyOverlap));
   Rect p;
   std::uint8_t flags =
@@ -479,7 +503,7 @@ void Encoder::anyOverlap(const Rect& r, ItemId skip, bool any, std::span<const A
     flags |= static_cast<std::uint8_t>(kSkipValid | item(skip.index));
     p = model.slots[skip.index].rect;
   }
-  out.b[at] |= flags;
+  out.at(at) |= flags;
   Group g(out);
   g.put(r.x, p.x, 0);
   g.put(r.y, p.y, 0);
@@ -494,15 +518,16 @@ void Encoder::addResponse(std::string_view name) {
   model.responses.emplace_back(name);
 }
 
-void Encoder::batch(std::span<const BatchMove> moves, int maxEvents, const Batch& b,
-                    std::span<const Answer> answers, std::span<const Leg> legs) {
-  const std::size_t at = out.b.size();
+void Encoder::batch(std::span<const BatchMove> moves, int maxEvents,
+                    std::span<const BatchOutcome> outcomes, std::span<const Answer> answers,
+                    std::span<const Leg> legs) {
+  const std::size_t at = out.size();
   out.u8(kindOf(CallKind::batchStep));
   const std::uint8_t extras = static_cast<std::uint8_t>(
       (maxEvents != kDefaultMaxEvents ? kLimit : 0) | (!answers.empty() ? kHasAnswers : 0) |
       (!legs.empty() ? kHasLegs : 0));
   if (extras) {
-    out.b[at] |= kExtras;
+    out.at(at) |= kExtras;
     out.u8(extras);
     if (extras & kLimit) out.varint(static_cast<std::uint64_t>(maxEvents));
   }
@@ -516,7 +541,7 @@ void Encoder::batch(std::span<const BatchMove> moves, int maxEvents, const Batch
     if (sameBits(s.rect.x + d.x, m.goal.x) && sameBits(s.rect.y + d.y, m.goal.y)) s.lastDelta = d;
   }
   for (std::size_t i = 0; i < moves.size(); ++i) {
-    const BatchOutcome o = b.outcome(i);
+    const BatchOutcome& o = outcomes[i];
     result(o.position, moves[i].goal, model.slots[moves[i].item.index].rect, o.collisions,
            moves[i].item);
   }
@@ -524,7 +549,7 @@ void Encoder::batch(std::span<const BatchMove> moves, int maxEvents, const Batch
   if (extras & kHasLegs) legBlock(legs);
   for (std::size_t i = 0; i < moves.size(); ++i) {
     Model::Slot& s = model.slots[moves[i].item.index];
-    s.rect = s.rect.at(b.outcome(i).position);
+    s.rect = s.rect.at(outcomes[i].position);
   }
 }
 
@@ -548,20 +573,28 @@ void Encoder::advance(double frameTime, int ticks) {
 
 namespace {
 
-ItemId aliveAt(In& in, const Model& m, std::int64_t index, std::string_view what) {
+[[noreturn, gnu::cold, gnu::noinline]] void failAlive(In& in, const Model& m, std::int64_t index,
+                                                      std::string_view what) {
   if (index < 0 || static_cast<std::uint64_t>(index) >= m.slots.size()) {
     in.fail(std::string(what) + ": item index " + std::to_string(index) +
             " was never issued (the world has " + std::to_string(m.slots.size()) + " slots)");
   }
   const Model::Slot& s = m.slots[static_cast<std::size_t>(index)];
-  if (!s.alive) {
-    in.fail(std::string(what) + ": item " + std::to_string(index) + "." +
-            std::to_string(s.generation) + " is not in the world (removed or never added)");
-  }
-  return {static_cast<std::uint32_t>(index), s.generation};
+  in.fail(std::string(what) + ": item " + std::to_string(index) + "." +
+          std::to_string(s.generation) + " is not in the world (removed or never added)");
 }
 
-ItemId readItem(In& in, Model& m, std::uint8_t kindByte, std::string_view what) {
+[[gnu::always_inline]] inline ItemId aliveAt(In& in, const Model& m, std::int64_t index,
+                                             std::string_view what) {
+  if (index < 0 || static_cast<std::uint64_t>(index) >= m.slots.size() ||
+      !m.slots[static_cast<std::size_t>(index)].alive) [[unlikely]] {
+    failAlive(in, m, index, what);
+  }
+  return {static_cast<std::uint32_t>(index), m.slots[static_cast<std::size_t>(index)].generation};
+}
+
+[[gnu::always_inline]] inline ItemId readItem(In& in, Model& m, std::uint8_t kindByte,
+                                              std::string_view what) {
   std::int64_t index = m.prevItem;
   if (!(kindByte & kSameItem)) index += in.zigzag(what);
   const ItemId id = aliveAt(in, m, index, what);
@@ -581,20 +614,44 @@ void requireBudget(In& in, const Model& m, std::uint64_t extra, std::uint64_t ma
 // A replayed call costs time in proportion to the cells it visits: refuse, as hostile, a call
 // that would visit more cells than the budget allows (a move of 10^15 px, a query over the
 // whole plane), instead of replaying it for hours.
-void requireReach(In& in, const Model& m, std::uint64_t at, const Rect& r, Vec2 goal,
-                  bool wholeHull, std::uint64_t maxCells, std::string_view what) {
+[[noreturn, gnu::cold, gnu::noinline]] void failReach(In& in, std::uint64_t at, double cells,
+                                                      std::uint64_t maxCells,
+                                                      std::string_view what) {
+  in.failAt(at, std::string(what) + " would visit about " + formatNumber(std::floor(cells)) +
+                    " cells, more than the replay's budget of " + std::to_string(maxCells) +
+                    " (ReplayOptions::maxCells)");
+}
+
+// `what`: a name, or the CallKind whose name it is (looked up only for the message).
+template <class What>
+[[gnu::always_inline]] inline void requireReach(In& in, const Model& m, std::uint64_t at,
+                                                const Rect& r, Vec2 goal, bool wholeHull,
+                                                std::uint64_t maxCells, What what) {
   const double c = m.cellSize;
+  const double budget = static_cast<double>(maxCells);
+  // Most moves span a few cells: an estimate by the reciprocal (no division) clears them; one
+  // near the budget is decided exactly as always.
+  {
+    const double k = 1.0 / c;
+    const double dx = std::fabs(goal.x - r.x) * k, dy = std::fabs(goal.y - r.y) * k;
+    const double w = r.w * k + 2, h = r.h * k + 2;
+    const double cells = wholeHull ? (dx + w) * (dy + h) : (dx + dy + 1) * std::max(w, h);
+    if (cells <= budget * 0.5) [[likely]]
+      return;
+  }
   const double dx = std::fabs(goal.x - r.x) / c, dy = std::fabs(goal.y - r.y) / c;
   const double w = r.w / c + 2, h = r.h / c + 2;
   const double cells = wholeHull ? (dx + w) * (dy + h) : (dx + dy + 1) * std::max(w, h);
-  if (!(cells <= static_cast<double>(maxCells))) {
-    in.failAt(at, std::string(what) + " would visit about " + formatNumber(std::floor(cells)) +
-                      " cells, more than the replay's budget of " + std::to_string(maxCells) +
-                      " (ReplayOptions::maxCells)");
+  if (!(cells <= budget)) {
+    if constexpr (std::is_same_v<What, CallKind>) {
+      failReach(in, at, cells, maxCells, callKindName(what));
+    } else {
+      failReach(in, at, cells, maxCells, what);
+    }
   }
 }
 
-Vec2 readGoal(In& in, const Model::Slot& s, std::string_view what) {
+[[gnu::always_inline]] inline Vec2 readGoal(In& in, const Model::Slot& s, std::string_view what) {
   GroupIn g(in, what);
   const double x = g.get(s.rect.x + s.lastDelta.x, s.rect.x, s.rect.x);
   const double y = g.get(s.rect.y + s.lastDelta.y, s.rect.y, s.rect.y);
@@ -652,9 +709,11 @@ void readCollisions(In& in, Model& m, Call& c, std::size_t n, ItemId self, const
       col.move.y = g.get(legGoal.y - col.itemRect.y, 0.0);
       col.ti = g.get(0.0, prevTi);
     }
-    if (!col.overlaps && !(col.ti >= 0.0 && col.ti <= 1.0)) {
-      in.fail("collision ti " + formatNumber(col.ti) +
-              " is outside [0, 1] for a hit that does not overlap");
+    // bump's rules take a hit up to its margin behind the start (a resting contact).
+    const double earliest = c.semantics == MoveSemantics::bump ? -bump::kDelta : 0.0;
+    if (!col.overlaps && !(col.ti >= earliest && col.ti <= 1.0)) {
+      in.fail("collision ti " + formatNumber(col.ti) + " is outside [" + formatNumber(earliest) +
+              ", 1] for a hit that does not overlap");
     }
     {
       const Rect o = m.slots[col.other.index].rect;
@@ -743,8 +802,9 @@ void readLegs(In& in, Call& c) {
   for (std::size_t k = 0; k < n; ++k) {
     Leg l;
     const std::uint8_t f = in.u8("leg flags");
-    if (f > 1) in.fail("leg flags " + std::to_string(f) + " are not defined");
+    if (f > 3) in.fail("leg flags " + std::to_string(f) + " are not defined");
     l.passThrough = f & 1;
+    l.stop = f & 2;
     GroupIn g(in, "leg");
     l.start.x = g.get(prev.goal.x, prev.start.x);
     l.start.y = g.get(prev.goal.y, prev.start.y);
@@ -863,6 +923,13 @@ void decodeKeyframe(In& in, Model& m, WorldState& s, std::uint64_t maxCells) {
   m.reset(s);
 }
 
+namespace {
+[[noreturn, gnu::cold, gnu::noinline]] void failFlags(In& in, const Call& c, std::uint8_t flags) {
+  in.failAt(c.offset, "call kind " + std::string(callKindName(c.kind)) + " with undefined flags " +
+                          std::to_string(flags));
+}
+}  // namespace
+
 void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.offset = in.offset();
   c.collisions.clear();
@@ -875,6 +942,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.item = c.skip = {};
   c.broad = BroadPhase::swept;
   c.maxResponses = kDefaultMaxResponses;
+  c.semantics = MoveSemantics::tunnelvision;
   c.maxEvents = kDefaultMaxEvents;
   const std::uint8_t kb = in.u8("call kind");
   const std::uint8_t kindBits = kb & 0x0F;
@@ -883,11 +951,9 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   }
   c.kind = static_cast<CallKind>(kindBits);
   const std::uint8_t flags = kb & 0xF0;
-  auto onlyFlags = [&](std::uint8_t allowed) {
-    if (flags & ~allowed) {
-      in.failAt(c.offset, "call kind " + std::string(callKindName(c.kind)) +
-                              " with undefined flags " + std::to_string(flags));
-    }
+  const auto onlyFlags = [&](std::uint8_t allowed) {
+    if (flags & ~allowed) [[unlikely]]
+      failFlags(in, c, flags);
   };
   switch (c.kind) {
     case CallKind::add: {
@@ -981,16 +1047,17 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       if (kb & kExtras) {
         extras = readExtras(
             in, mover ? static_cast<std::uint8_t>(kHasAnswers | kHasLegs)
-                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers | kHasLegs));
+                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers | kHasLegs | kBump));
         if (extras & kBounds) c.broad = BroadPhase::bounds;
+        if (extras & kBump) c.semantics = MoveSemantics::bump;
         if (extras & kLimit) c.maxResponses = readLimit(in, "maxResponses", 4096);
       }
       Model::Slot& s = m.slots[c.item.index];
       c.start = s.rect;
       c.goal = readGoal(in, s, "goal");
-      const bool hull =
-          c.broad == BroadPhase::bounds || (mover && m.movers[c.mover].kind == MoverKind::sweep);
-      requireReach(in, m, c.offset, s.rect, c.goal, hull, maxCells, callKindName(c.kind));
+      const bool hull = c.broad == BroadPhase::bounds || c.semantics == MoveSemantics::bump ||
+                        (mover && m.movers[c.mover].kind == MoverKind::sweep);
+      requireReach(in, m, c.offset, s.rect, c.goal, hull, maxCells, c.kind);
       const Vec2 d = c.goal - s.rect.position();
       if (sameBits(s.rect.x + d.x, c.goal.x) && sameBits(s.rect.y + d.y, c.goal.y)) s.lastDelta = d;
       if (kb & kFree) {
@@ -1007,8 +1074,9 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       onlyFlags(kExtras | kFree);
       std::uint8_t extras = 0;
       if (kb & kExtras) {
-        extras = readExtras(in, kBounds | kLimit | kHasAnswers | kHasLegs);
+        extras = readExtras(in, kBounds | kLimit | kHasAnswers | kHasLegs | kBump);
         if (extras & kBounds) c.broad = BroadPhase::bounds;
+        if (extras & kBump) c.semantics = MoveSemantics::bump;
         if (extras & kLimit) c.maxResponses = readLimit(in, "maxResponses", 4096);
       }
       {
@@ -1026,7 +1094,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       }
       if (!(c.rect.w > 0 && c.rect.h > 0))
         in.failAt(c.offset, "project of a rect with w or h <= 0");
-      requireReach(in, m, c.offset, c.rect, c.goal, c.broad == BroadPhase::bounds, maxCells,
+      requireReach(in, m, c.offset, c.rect, c.goal,
+                   c.broad == BroadPhase::bounds || c.semantics == MoveSemantics::bump, maxCells,
                    "project");
       if (kb & kFree) {
         c.position = c.goal;
@@ -1056,8 +1125,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       c.rect.h = g.get(p.h, c.rect.w);
       // The world cannot hold what a negative size means (and would not be asked it).
       if (c.rect.w < 0 || c.rect.h < 0) in.failAt(c.offset, "a query rect with a negative size");
-      requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells,
-                   callKindName(c.kind));
+      requireReach(in, m, c.offset, c.rect, c.rect.position(), true, maxCells, c.kind);
       if (any) {
         c.any = kb & kAny;
         if (kb & kAnswers) readAnswers(in, m, c, c.skip);

@@ -4,6 +4,7 @@
 // last delta of each, the mover table), the Encoder that turns observer reports into bytes, and
 // decodeCall that turns bytes back into a Call, checking everything on the way.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -19,7 +20,7 @@ namespace tv::rec {
 
 inline constexpr char kMagic[8] = {'T', 'V', 'R', 'E', 'C', 0, '\r', '\n'};
 inline constexpr std::uint16_t kVersionMajor = 1;
-inline constexpr std::uint16_t kVersionMinor = 0;
+inline constexpr std::uint16_t kVersionMinor = 1;
 inline constexpr std::size_t kHeaderSize = 32;
 inline constexpr std::uint32_t kEndMark = 0x21444E45u;  // "END!": the chunk that closes a file
 inline constexpr std::uint32_t kMaxChunk = 1u << 30;
@@ -39,7 +40,8 @@ enum : std::uint8_t {
   kAnswers = 0x80,
 };
 // Extras byte.
-enum : std::uint8_t { kBounds = 1, kLimit = 2, kHasAnswers = 4, kHasLegs = 8 };
+// kBump: the call follows bump.lua's rules (MoveSemantics::bump).
+enum : std::uint8_t { kBounds = 1, kLimit = 2, kHasAnswers = 4, kHasLegs = 8, kBump = 16 };
 
 struct Answer {
   ItemId item, other;
@@ -65,6 +67,7 @@ struct Call {
   ItemId skip;
   BroadPhase broad = BroadPhase::swept;
   int maxResponses = kDefaultMaxResponses;
+  MoveSemantics semantics = MoveSemantics::tunnelvision;
   Vec2 position;
   std::vector<Collision> collisions;
   std::vector<ItemId> found;
@@ -128,8 +131,9 @@ class Encoder {
   void moverMove(std::uint32_t mover, bool define, const MoverSpec& spec, ItemId id,
                  const Rect& start, Vec2 goal, const MoveResult& r, std::span<const Answer> answers,
                  std::span<const Leg> legs);
-  void batch(std::span<const BatchMove> moves, int maxEvents, const Batch& b,
-             std::span<const Answer> answers, std::span<const Leg> legs);
+  void batch(std::span<const BatchMove> moves, int maxEvents,
+             std::span<const BatchOutcome> outcomes, std::span<const Answer> answers,
+             std::span<const Leg> legs);
   void label(ItemId id, std::string_view label, std::string_view category);
   void advance(double frameTime, int ticks);
 
@@ -142,6 +146,10 @@ class Encoder {
   void result(Vec2 position, Vec2 goal, const Rect& start, std::span<const Collision> cs,
               ItemId item);
 };
+
+// The 32-byte file header (FORMAT.md) of a recording of a world with this cell size.
+[[nodiscard]] std::array<std::uint8_t, kHeaderSize> fileHeader(double cellSize,
+                                                               std::uint32_t keyframeEvery);
 
 // Reads a keyframe's world state into `s` and resets `m` from it (cell budget checked).
 void decodeKeyframe(In& in, Model& m, WorldState& s, std::uint64_t maxCells);

@@ -217,6 +217,7 @@ void Replay::Impl::index() {
     fileFail(rec::kHeaderSize, 0, "the recording holds no whole frame");
   }
   summary.frames = frames.size();
+  for (std::size_t k = 0; k < items.size(); ++k) items[k].maxSpeed = length(longest[k].d);
   for (auto& [id, counts] : answerCounts) {
     const auto best =
         std::max_element(counts.begin(), counts.end(), [](const auto& a, const auto& b) {
@@ -240,16 +241,45 @@ bool Replay::Impl::beginFrame(rec::In& src, rec::Model& m, WorldState& ws, std::
 }
 
 std::size_t Replay::Impl::itemFor(ItemId id, std::uint64_t when) {
+  // Most calls name the item their slot held last time: no hashing.
+  if (id.index < slotItem.size() && slotItem[id.index] != 0) {
+    const std::size_t k = slotItem[id.index] - 1;
+    if (items[k].id == id) [[likely]] {
+      items[k].lastFrame = std::max(items[k].lastFrame, when);
+      return k;
+    }
+  }
   auto [it, fresh] = itemIndex.try_emplace(id, items.size());
   if (fresh) {
     RecordedItem r;
     r.id = id;
     r.firstFrame = r.lastFrame = when;
     items.push_back(r);
+    longest.push_back({});
+    isMoving.push_back(false);
   }
+  if (id.index >= slotItem.size()) slotItem.resize(std::size_t{id.index} + 1, 0);
+  slotItem[id.index] = static_cast<std::uint32_t>(it->second + 1);
   RecordedItem& r = items[it->second];
   r.lastFrame = std::max(r.lastFrame, when);
   return it->second;
+}
+
+void Replay::Impl::markMoving(std::size_t k) {
+  if (isMoving[k]) return;
+  isMoving[k] = true;
+  moving.insert(items[k].id);
+}
+
+void Replay::Impl::moveLength(std::size_t k, Vec2 d) {
+  // The longest move by its squared length; its length (hypot) once, when the index is done.
+  const double sq = d.x * d.x + d.y * d.y;
+  Longest& l = longest[k];
+  if (std::isfinite(sq) && std::isfinite(l.sq)) {
+    if (sq > l.sq) l = {sq, d};
+  } else if (length(d) > length(l.d)) {
+    l = {sq, d};
+  }
 }
 
 void Replay::Impl::tally(
@@ -265,27 +295,30 @@ void Replay::Impl::tally(
     case CallKind::move:
     case CallKind::moverMove: {
       ++summary.moves;
-      moving.insert(c.item);
-      RecordedItem& r = items[itemFor(c.item, f)];
+      const std::size_t k = itemFor(c.item, f);
+      markMoving(k);
+      RecordedItem& r = items[k];
       ++r.moves;
       r.hits += c.collisions.size();
-      r.maxSpeed = std::max(r.maxSpeed, length(c.position - c.start.position()));
+      moveLength(k, c.position - c.start.position());
       break;
     }
     case CallKind::batchStep:
       summary.moves += c.bodies.size();
       for (const rec::BodyOut& b : c.bodies) {
-        moving.insert(b.item);
-        RecordedItem& r = items[itemFor(b.item, f)];
+        const std::size_t k = itemFor(b.item, f);
+        markMoving(k);
+        RecordedItem& r = items[k];
         ++r.moves;
         r.hits += b.count;
-        r.maxSpeed = std::max(r.maxSpeed, length(b.position - b.start.position()));
+        moveLength(k, b.position - b.start.position());
       }
       break;
-    case CallKind::update:
-      if (!(c.rect == c.start)) moving.insert(c.item);
-      itemFor(c.item, f);
+    case CallKind::update: {
+      const std::size_t k = itemFor(c.item, f);
+      if (!(c.rect == c.start)) markMoving(k);
       break;
+    }
     case CallKind::add:
     case CallKind::remove:
       itemFor(c.item, f);

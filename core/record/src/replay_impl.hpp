@@ -49,6 +49,14 @@ struct Replay::Impl {
   std::unordered_map<ItemId, std::pair<std::string, std::string>> labels;
   std::unordered_map<ItemId, ResponseId> commonAnswer;
   std::unordered_set<ItemId> moving;  // items the recording moves or updates
+  // Beside `items`, by the same index: whether it moves, and its longest move.
+  std::vector<bool> isMoving;
+  struct Longest {
+    double sq = 0.0;
+    Vec2 d;
+  };
+  std::vector<Longest> longest;
+  std::vector<std::uint32_t> slotItem;  // by slot: 1 + the index in `items` of its last item
   ReplaySummary summary;
   bool statefulMovers = false;
   // calls(frame) decodes from the keyframe: the last answer is kept for a UI asking every frame.
@@ -63,7 +71,7 @@ struct Replay::Impl {
   std::uint64_t frame = 0;
   std::uint32_t callIndex = 0;
   std::optional<Divergence> pendingDivergence;  // a keyframe that differs from the world
-  std::map<std::uint32_t, std::unique_ptr<Mover>> movers;
+  std::vector<std::unique_ptr<Mover>> movers;   // by recorded mover id
   Batch batch;
   std::unique_ptr<Mover> whatIfMover;
   std::vector<ItemId> found;
@@ -76,6 +84,8 @@ struct Replay::Impl {
   void index();
   bool beginFrame(rec::In& in, rec::Model& m, WorldState& ws, std::uint64_t f);
   std::size_t itemFor(ItemId id, std::uint64_t frame);
+  void markMoving(std::size_t k);
+  void moveLength(std::size_t k, Vec2 d);
   void tally(
       const rec::Call& c, std::uint64_t f,
       std::unordered_map<ItemId, std::vector<std::pair<ResponseId, std::uint64_t>>>& answers);
@@ -84,6 +94,15 @@ struct Replay::Impl {
   void enterFrame(std::uint64_t f, bool restore);
   void restoreWorld(const WorldState& ws);
   std::optional<Divergence> execute(MoveTrace* trace, bool compare);
+  std::optional<Divergence> replayMove(MoveTrace* trace, bool compare, std::uint32_t index);
+  std::optional<Divergence> executeOther(MoveTrace* trace, bool compare, std::uint32_t index);
+  Mover& recordedMover(std::uint32_t id);
+  // The words of a divergence of the current call (the first one set stays).
+  void setDivergence(std::optional<Divergence>& out, std::uint32_t index, const std::string& what,
+                     const std::string& expected, const std::string& got) const;
+  void describeMove(std::optional<Divergence>& out, std::uint32_t index, std::string_view prefix,
+                    Vec2 pos, std::span<const Collision> got, Vec2 expPos,
+                    std::span<const Collision> exp) const;
   /// A pair the recording never asked about (what-if): the item's most common recorded answer;
   /// for an item with none (a body the game moves itself), other moving bodies are ignored and
   /// everything else slides.

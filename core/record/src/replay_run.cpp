@@ -59,6 +59,23 @@ bool same(const Rect& a, const Rect& b) {
   return rec::sameBits(a.x, b.x) && rec::sameBits(a.y, b.y) && rec::sameBits(a.w, b.w) &&
          rec::sameBits(a.h, b.h);
 }
+// Bit for bit, every field a replay compares.
+bool sameCollision(const Collision& g, const Collision& e) {
+  return g.other == e.other && g.item == e.item && g.overlaps == e.overlaps &&
+         g.corner == e.corner && rec::sameBits(g.ti, e.ti) && same(g.move, e.move) &&
+         same(g.normal, e.normal) && same(g.touch, e.touch) && same(g.itemRect, e.itemRect) &&
+         same(g.otherRect, e.otherRect) && g.response == e.response && same(g.target, e.target);
+}
+bool sameMove(Vec2 pos, std::span<const Collision> got, Vec2 expPos,
+              std::span<const Collision> exp) {
+  return same(pos, expPos) && got.size() == exp.size() &&
+         std::equal(got.begin(), got.end(), exp.begin(), sameCollision);
+}
+// The same mover: what its name says (kind, and a substep's inner mover) and its numbers.
+bool sameSpec(const MoverSpec& a, const MoverSpec& b) {
+  return a.kind == b.kind && (a.kind != MoverKind::substep || a.inner == b.inner) &&
+         rec::sameBits(a.maxStep, b.maxStep) && rec::sameBits(a.safetyFraction, b.safetyFraction);
+}
 
 // The user's filter, answered from the recording: by pair, or in the recorded order.
 struct ReplayFilter {
@@ -196,42 +213,124 @@ void Replay::Impl::enterFrame(std::uint64_t f, bool restore) {
   }
 }
 
-std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) {
+void Replay::Impl::setDivergence(std::optional<Divergence>& out, std::uint32_t index,
+                                 const std::string& what, const std::string& expected,
+                                 const std::string& got) const {
+  if (out) return;
+  out = Divergence{frame, index, call.kind, labelOf(call.item), what, expected, got, call.offset};
+}
+
+void Replay::Impl::describeMove(std::optional<Divergence>& out, std::uint32_t index,
+                                std::string_view prefix, Vec2 pos, std::span<const Collision> got,
+                                Vec2 expPos, std::span<const Collision> exp) const {
+  const auto diverge = [&](const std::string& what, const std::string& expected,
+                           const std::string& g) { setDivergence(out, index, what, expected, g); };
+  const std::string pre(prefix);
+  if (!same(pos, expPos)) diverge(pre + "position", fmt(expPos), fmt(pos));
+  if (got.size() != exp.size()) {
+    diverge(pre + "collision count", std::to_string(exp.size()), std::to_string(got.size()));
+  }
+  for (std::size_t i = 0; i < std::min(got.size(), exp.size()) && !out; ++i) {
+    const Collision &g = got[i], &e = exp[i];
+    const std::string p = pre + "collision " + std::to_string(i) + " ";
+    if (g.other != e.other) diverge(p + "other", labelOf(e.other), labelOf(g.other));
+    if (g.item != e.item) diverge(p + "item", fmt(e.item), fmt(g.item));
+    if (g.overlaps != e.overlaps)
+      diverge(p + "overlaps", e.overlaps ? "yes" : "no", g.overlaps ? "yes" : "no");
+    if (g.corner != e.corner)
+      diverge(p + "corner", e.corner ? "yes" : "no", g.corner ? "yes" : "no");
+    if (!rec::sameBits(g.ti, e.ti)) diverge(p + "ti", fmt(e.ti), fmt(g.ti));
+    if (!same(g.move, e.move)) diverge(p + "move", fmt(e.move), fmt(g.move));
+    if (!same(g.normal, e.normal)) diverge(p + "normal", fmt(e.normal), fmt(g.normal));
+    if (!same(g.touch, e.touch)) diverge(p + "touch", fmt(e.touch), fmt(g.touch));
+    if (!same(g.itemRect, e.itemRect)) diverge(p + "itemRect", fmt(e.itemRect), fmt(g.itemRect));
+    if (!same(g.otherRect, e.otherRect))
+      diverge(p + "otherRect", fmt(e.otherRect), fmt(g.otherRect));
+    if (g.response != e.response)
+      diverge(p + "response", std::to_string(e.response), std::to_string(g.response));
+    if (!same(g.target, e.target)) diverge(p + "target", fmt(e.target), fmt(g.target));
+  }
+}
+
+Mover& Replay::Impl::recordedMover(std::uint32_t id) {
+  const MoverSpec& spec = model.movers[id];
+  if (id < movers.size() && movers[id] && sameSpec(movers[id]->spec(), spec)) [[likely]] {
+    return *movers[id];
+  }
+  if (id >= movers.size()) movers.resize(id + 1);
+  movers[id] = std::make_unique<Mover>(spec);
+  return *movers[id];
+}
+
+// Most of a replay: a recorded move made again and compared, without the what-if and the
+// statistics that execute() also serves. The same results and the same words as execute().
+std::optional<Divergence> Replay::Impl::replayMove(MoveTrace* trace, bool compare,
+                                                   std::uint32_t index) {
   rec::Call& c = call;
-  rec::decodeCall(in, model, c, options.maxCells);
+  ReplayFilter rf{c, *this, true, 0, {}};
+  const Filter filter(rf);
+  rec::tLegs = {&c.legs, 0, false, false};
+  struct ResetLegs {
+    ~ResetLegs() { rec::tLegs = {}; }
+  } resetLegs;
+  MoveResult r;
+  try {
+    if (c.kind == CallKind::move) {
+      MoveOptions o;
+      o.broad = c.broad;
+      o.maxResponses = c.maxResponses;
+      o.semantics = c.semantics;
+      o.trace = trace;
+      r = world->move(c.item, c.goal, filter, o);
+    } else {
+      r = recordedMover(c.mover).move(*world, c.item, c.goal, filter, trace);
+    }
+  } catch (const Error& e) {
+    if (!compare) return std::nullopt;
+    std::optional<Divergence> out;
+    setDivergence(out, index, "the call", "succeeded", std::string("refused: ") + e.what());
+    return out;
+  }
+  if (!compare) return std::nullopt;
+  const bool legsAgree = !rec::tLegs.overrun && rec::tLegs.next == c.legs.size();
+  if (sameMove(r.position, r.collisions, c.position, c.collisions) && rf.mismatch.empty() &&
+      legsAgree) [[likely]] {
+    return std::nullopt;
+  }
+  std::optional<Divergence> out;
+  describeMove(out, index, "", r.position, r.collisions, c.position, c.collisions);
+  if (!rf.mismatch.empty()) setDivergence(out, index, "filter", "not asked", rf.mismatch);
+  if (!legsAgree) {
+    setDivergence(out, index, "user response legs", std::to_string(c.legs.size()),
+                  rec::tLegs.overrun ? "more" : std::to_string(rec::tLegs.next));
+  }
+  return out;
+}
+
+std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) {
+  rec::decodeCall(in, model, call, options.maxCells);
   const std::uint32_t index = callIndex++;
+  if ((call.kind == CallKind::moverMove || call.kind == CallKind::move) && !whatIf() &&
+      !classifyRecorded && !options.itemStats) [[likely]] {
+    return replayMove(trace, compare, index);
+  }
+  return executeOther(trace, compare, index);
+}
+
+std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool compare,
+                                                     std::uint32_t index) {
+  rec::Call& c = call;
   std::optional<Divergence> out;
   const auto diverge = [&](const std::string& what, const std::string& expected,
                            const std::string& got) {
-    if (out) return;
-    out = Divergence{frame, index, c.kind, labelOf(c.item), what, expected, got, c.offset};
+    setDivergence(out, index, what, expected, got);
   };
-  const auto compareMove = [&](const std::string& prefix, Vec2 pos, std::span<const Collision> got,
+  // Every move is compared; the words are made only for a difference.
+  const auto compareMove = [&](std::string_view prefix, Vec2 pos, std::span<const Collision> got,
                                Vec2 expPos, std::span<const Collision> exp) {
-    if (!same(pos, expPos)) diverge(prefix + "position", fmt(expPos), fmt(pos));
-    if (got.size() != exp.size()) {
-      diverge(prefix + "collision count", std::to_string(exp.size()), std::to_string(got.size()));
-    }
-    for (std::size_t i = 0; i < std::min(got.size(), exp.size()) && !out; ++i) {
-      const Collision &g = got[i], &e = exp[i];
-      const std::string p = prefix + "collision " + std::to_string(i) + " ";
-      if (g.other != e.other) diverge(p + "other", labelOf(e.other), labelOf(g.other));
-      if (g.item != e.item) diverge(p + "item", fmt(e.item), fmt(g.item));
-      if (g.overlaps != e.overlaps)
-        diverge(p + "overlaps", e.overlaps ? "yes" : "no", g.overlaps ? "yes" : "no");
-      if (g.corner != e.corner)
-        diverge(p + "corner", e.corner ? "yes" : "no", g.corner ? "yes" : "no");
-      if (!rec::sameBits(g.ti, e.ti)) diverge(p + "ti", fmt(e.ti), fmt(g.ti));
-      if (!same(g.move, e.move)) diverge(p + "move", fmt(e.move), fmt(g.move));
-      if (!same(g.normal, e.normal)) diverge(p + "normal", fmt(e.normal), fmt(g.normal));
-      if (!same(g.touch, e.touch)) diverge(p + "touch", fmt(e.touch), fmt(g.touch));
-      if (!same(g.itemRect, e.itemRect)) diverge(p + "itemRect", fmt(e.itemRect), fmt(g.itemRect));
-      if (!same(g.otherRect, e.otherRect))
-        diverge(p + "otherRect", fmt(e.otherRect), fmt(g.otherRect));
-      if (g.response != e.response)
-        diverge(p + "response", std::to_string(e.response), std::to_string(g.response));
-      if (!same(g.target, e.target)) diverge(p + "target", fmt(e.target), fmt(g.target));
-    }
+    if (sameMove(pos, got, expPos, exp)) [[likely]]
+      return;
+    describeMove(out, index, prefix, pos, got, expPos, exp);
   };
   const auto compareFound = [&](std::span<const ItemId> got) {
     if (got.size() != c.found.size()) {
@@ -338,6 +437,7 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
         MoveOptions o;
         o.broad = c.broad;
         o.maxResponses = c.maxResponses;
+        o.semantics = c.semantics;
         o.trace = trace;
         const MoveResult r = world->move(c.item, c.goal, filter, o);
         if (compare) compareMove("", r.position, r.collisions, c.position, c.collisions);
@@ -349,14 +449,7 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
           whatIfMove(c.item, c.goal, c.position);
           break;
         }
-        const MoverSpec& spec = model.movers[c.mover];
-        auto& m = movers[c.mover];
-        if (!m || m->spec().name() != spec.name() ||
-            !rec::sameBits(m->spec().maxStep, spec.maxStep) ||
-            !rec::sameBits(m->spec().safetyFraction, spec.safetyFraction)) {
-          m = std::make_unique<Mover>(spec);
-        }
-        const MoveResult r = m->move(*world, c.item, c.goal, filter, trace);
+        const MoveResult r = recordedMover(c.mover).move(*world, c.item, c.goal, filter, trace);
         if (compare) compareMove("", r.position, r.collisions, c.position, c.collisions);
         afterRecordedMove(c.item, c.start);
         break;
@@ -367,6 +460,7 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
         MoveOptions o;
         o.broad = c.broad;
         o.maxResponses = c.maxResponses;
+        o.semantics = c.semantics;
         o.trace = trace;
         const MoveResult r = c.kind == CallKind::check ? world->check(c.item, c.goal, filter, o)
                                                        : world->project(c.rect, c.goal, filter, o);
@@ -422,8 +516,12 @@ std::optional<Divergence> Replay::Impl::execute(MoveTrace* trace, bool compare) 
           const rec::BodyOut& b = c.bodies[i];
           const BatchOutcome o = batch.outcome(i);
           if (exact && compare) {
-            compareMove("body " + labelOf(b.item) + " ", o.position, o.collisions, b.position,
-                        std::span<const Collision>(c.collisions).subspan(b.first, b.count));
+            const auto recorded =
+                std::span<const Collision>(c.collisions).subspan(b.first, b.count);
+            if (!sameMove(o.position, o.collisions, b.position, recorded)) {
+              compareMove("body " + labelOf(b.item) + " ", o.position, o.collisions, b.position,
+                          recorded);
+            }
           } else if (!exact && report) {
             ++report->moves;
             const double distance = length(o.position - b.position);

@@ -169,8 +169,10 @@ describe('world:move', function()
       'Item zz must be added to the world before getting its rect. Use world:add(item, x,y,w,h) to add it first.')
   end)
 
-  it('an item that starts inside another is pushed out (overlaps, ti < 0)', function()
-    --  a (0,0 2x2) overlaps b (1,0 2x2) by 1x2: ti = -2
+  --   a (0,0 2x2) overlaps b (1,0 2x2):   0 1 2 3
+  --                                        a a+b b      bump's ti: minus the area of the minimum
+  --                                        a a+b b      displacement, min(2, 1) * min(2, 2) = -2
+  it('an item inside another that does not move stays, reporting the overlap (bump\'s rule)', function()
     local world = bump.newWorld()
     world:add('a', 0, 0, 2, 2)
     world:add('b', 1, 0, 2, 2)
@@ -178,6 +180,17 @@ describe('world:move', function()
     assert.equal(1, len)
     assert.is_true(cols[1].overlaps)
     assert.equal(-2, cols[1].ti)
+    assert.same({ x = -1, y = 0 }, cols[1].touch)   -- the way out: one to the left
+    assert.same({ 0, 0 }, { x, y })                 -- but slide keeps a still move's goal
+  end)
+
+  it('an item inside another that moves is pushed back against its move', function()
+    local world = bump.newWorld()
+    world:add('a', 0, 0, 2, 2)
+    world:add('b', 1, 0, 2, 2)
+    local x, y, cols = world:move('a', 0.5, 0)
+    assert.same({ x = -1, y = 0 }, cols[1].touch)
+    assert.same({ x = -1, y = 0 }, cols[1].normal)
     assert.same({ -1, 0 }, { x, y })
   end)
 end)

@@ -2,10 +2,37 @@
 local tv = require 'tunnelvision'
 
 describe('tunnelvision', function()
-  it('is the same world type as tunnelvision.bump, and lists the movers', function()
+  it('has worlds with the core\'s rules; tunnelvision.bump\'s have bump\'s; setMover switches', function()
     assert.equal(require('tunnelvision.bump'), tv.bump)
-    assert.equal(tv.bump.newWorld, tv.newWorld)
-    assert.same({ 'discrete', 'sweep', 'substep-discrete', 'substep-sweep', 'continuous', 'pixel', 'adaptive' }, tv.movers)
+    assert.same({ 'discrete', 'sweep', 'substep-discrete', 'substep-sweep', 'continuous', 'pixel',
+                  'adaptive', 'bump' }, tv.movers)
+    assert.equal('continuous', tv.newWorld():getMover())
+    local world = tv.bump.newWorld()
+    assert.equal('bump', world:getMover())
+    world:setMover('continuous')
+    assert.equal('continuous', world:getMover())
+    world:setMover('bump')
+    assert.equal('bump', world:getMover())
+  end)
+
+  --   a ball 2 wide in a slot 4 wide, moving 64 right and bouncing (bump's rules and ours
+  --   agree that it must stay in the slot; bump.lua itself lets it through the right wall):
+  --   l 0..16 | ball 17..19 | r 20..36
+  it('the core\'s rules bounce as often as needed; bump\'s stop against what was met again', function()
+    for _, make in ipairs({ tv.newWorld, tv.bump.newWorld }) do
+      local world = make()
+      world:add('l', 0, 0, 16, 64)
+      world:add('r', 20, 0, 16, 64)
+      world:add('ball', 17, 30, 2, 2)
+      local x, _, cols, len = world:move('ball', 17 + 64, 30, function() return 'bounce' end)
+      assert.is_true(x >= 16 and x <= 18)
+      if make == tv.bump.newWorld then
+        assert.same({ 'r', 'l', 'r' }, { cols[1].other, cols[2].other, cols[3].other })
+        assert.equal(18, x)
+      else
+        assert.is_true(len > 3)
+      end
+    end
   end)
 end)
 

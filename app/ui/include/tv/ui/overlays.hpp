@@ -57,6 +57,9 @@ struct WorldPicture {
   std::span<const sim::Body> bodies;
   /// Per body, where it is drawn (interpolated between ticks); empty: at its physics rect.
   std::span<const Rect> renderRects;
+  /// Per body, a fill of its own (0: the usual body colours): a recording's items that never
+  /// move but have a category.
+  std::span<const ImU32> bodyFills;
   std::optional<std::size_t> selected;
   /// The selected body's recent moves, oldest first; the last is drawn in full.
   std::span<const TracedMove> moves;

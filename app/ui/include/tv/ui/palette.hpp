@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string_view>
 
 #include "imgui.h"
 
@@ -25,6 +26,14 @@ inline constexpr ImU32 kBody = IM_COL32(72, 200, 170, 255);
 /// A body that no longer moves (stopped, resolved).
 inline constexpr ImU32 kBodyIdle = IM_COL32(52, 110, 98, 255);
 inline constexpr ImU32 kSelected = IM_COL32(255, 255, 255, 255);
+/// Bodies of a recording that never move but say what they are (a category: an enemy that
+/// stands and shoots, a coin): one of these hues per category, picked from its name, so that
+/// they do not read as level geometry (kSolid).
+inline constexpr ImU32 kCategoryHues[] = {
+    IM_COL32(230, 120, 200, 255), IM_COL32(240, 170, 70, 255),  IM_COL32(120, 170, 255, 255),
+    IM_COL32(200, 220, 90, 255),  IM_COL32(250, 110, 110, 255), IM_COL32(170, 130, 250, 255),
+    IM_COL32(90, 210, 230, 255),  IM_COL32(230, 200, 150, 255),
+};
 
 // -- what one move did (from its MoveTrace) ------------------------------------------------------
 inline constexpr ImU32 kVisitedCell = IM_COL32(240, 190, 60, 60);
@@ -68,6 +77,9 @@ inline constexpr ImU32 kCompareTints[] = {
 /// that one item is visible and a crowded cell still leaves its contents readable.
 [[nodiscard]] ImU32 occupiedFill(std::size_t count);
 
+/// The hue of a category (kCategoryHues), the same for the same name in every session.
+[[nodiscard]] ImU32 categoryColour(std::string_view category);
+
 /// How a legend entry is drawn: its swatch's shape says which overlay primitive it is.
 enum class Swatch { fill, outline, line, arrow, dot, dashed };
 
@@ -75,6 +87,9 @@ struct LegendEntry {
   ImU32 colour;
   Swatch swatch;
   const char* label;
+  /// Only a recording's or a live game's items are drawn so (a category's colour): a scene's
+  /// legend leaves it out.
+  bool recordedOnly = false;
 };
 
 /// Every colour above that means something in the world view, in reading order.

@@ -112,8 +112,11 @@ void countersContents(const SimSource& source);
 /// Name, mover, frame and call, and paused, on one line; the timing and zoom on a second; a
 /// scene's verdict on a third; the source's notes after.
 void hudContents(const Source& source, const DebuggerState& state);
-/// Every palette entry with its swatch, in `columns` columns.
-void legendContents(int columns);
+/// Every palette entry with its swatch, in `columns` columns; a recording's or a live game's
+/// (`recorded`) also the entries only their items are drawn with.
+void legendContents(int columns, bool recorded);
+/// How many legend columns fit in `width` px with every label whole (1..8).
+[[nodiscard]] int legendColumns(float width, bool recorded);
 
 /// "tick" for a scene (its frames are ticks), "frame" otherwise.
 [[nodiscard]] const char* frameWord(const Source& source);

@@ -116,6 +116,8 @@ class ReplaySource final : public Source {
   std::unordered_map<ItemId, std::size_t> recorded_;  // item -> index in replay.items()
   // The picture's storage.
   std::vector<sim::Solid> solids_;
+  std::vector<ImU32> bodyFills_;  // per body of the last picture: its category's colour, or 0
+  std::string terrain_;           // the category of the level's geometry (drawn as solids)
   std::vector<sim::Body> bodies_;
   std::size_t history_ = 8;  // frames re-traced before the one on screen
 };
