@@ -7,6 +7,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -125,6 +126,61 @@ inline int cutGlyphs(std::string* where) {
     }
   }
   return cut;
+}
+
+/// Glyphs of a window's text (by a part of its name) drawn over another of its glyphs: one
+/// line of text written over another. Each overlap is counted once; `where` says where.
+inline int overlappingGlyphs(const std::string& window, std::string* where) {
+  const ImDrawData* dd = ImGui::GetDrawData();
+  const ImVector<ImFontGlyph>& glyphs = ImGui::GetIO().Fonts->Fonts[0]->Glyphs;
+  struct Box {
+    float x0, y0, x1, y1;
+  };
+  std::vector<Box> boxes;
+  for (int l = 0; l < dd->CmdListsCount; ++l) {
+    const ImDrawList* dl = dd->CmdLists[l];
+    const std::string owner = dl->_OwnerName ? dl->_OwnerName : "";
+    if (owner.find(window) == std::string::npos) continue;
+    for (const ImDrawCmd& cmd : dl->CmdBuffer) {
+      if (cmd.UserCallback) continue;
+      const ImVec4 clip = cmd.ClipRect;
+      for (unsigned i = 0; i + 3 <= cmd.ElemCount; i += 3) {
+        const ImDrawIdx* idx = dl->IdxBuffer.Data + cmd.IdxOffset + i;
+        const ImDrawVert& a = dl->VtxBuffer[static_cast<int>(cmd.VtxOffset + idx[0])];
+        const ImDrawVert& c = dl->VtxBuffer[static_cast<int>(cmd.VtxOffset + idx[2])];
+        for (const ImFontGlyph& g : glyphs) {
+          if (g.U0 != a.uv.x || g.V0 != a.uv.y || g.U1 != c.uv.x || g.V1 != c.uv.y) continue;
+          if (!(g.X1 > g.X0)) break;
+          const Box b{std::min(a.pos.x, c.pos.x), std::min(a.pos.y, c.pos.y),
+                      std::max(a.pos.x, c.pos.x), std::max(a.pos.y, c.pos.y)};
+          // Only what shows: a glyph scrolled out of its clip rect is not read.
+          if (b.x1 <= clip.x || b.x0 >= clip.z || b.y1 <= clip.y || b.y0 >= clip.w) break;
+          // The second triangle of a glyph's quad repeats its corners.
+          if (!boxes.empty() && boxes.back().x0 == b.x0 && boxes.back().y0 == b.y0) break;
+          boxes.push_back(b);
+          break;
+        }
+      }
+    }
+  }
+  int n = 0;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const Box& p = boxes[i];
+      const Box& q = boxes[j];
+      // More than a pixel each way: glyphs of one word touch, they do not cover each other.
+      if (std::min(p.x1, q.x1) - std::max(p.x0, q.x0) > 1.0f &&
+          std::min(p.y1, q.y1) - std::max(p.y0, q.y0) > 1.0f) {
+        ++n;
+        char text[96];
+        std::snprintf(text, sizeof text, "(%.0f, %.0f) over (%.0f, %.0f); ",
+                      static_cast<double>(p.x0), static_cast<double>(p.y0),
+                      static_cast<double>(q.x0), static_cast<double>(q.y0));
+        if (where->size() < 400) where->append(text);
+      }
+    }
+  }
+  return n;
 }
 
 /// The text a window drew (its draw list, by a part of the window's name; empty: every

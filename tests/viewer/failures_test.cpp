@@ -141,6 +141,62 @@ TEST_F(DebuggerDriver, ARecordingsWhatIfListsItsTunnelsAndGoTracesWhatDiffers) {
   EXPECT_NE(dbg().session().panel(1).callTrace(), nullptr);
 }
 
+// A game whose own mover tunnels: its recording lists the recorded run's failures itself, with
+// no what-if asked for. The bullet moves 32 px a frame with the naive mover, so from frame 1
+// to frame 2 it is on either side of the 4 px wall and never touched it.
+//
+//    frame 1   [b]        |#|          frame 2         |#|   [b]
+//              x 32       x 40..44                     x 64
+TEST_F(DebuggerDriver, ARecordingListsTheGamesOwnTunnelsWithoutAWhatIf) {
+  const std::string path = ::testing::TempDir() + "tv_own_tunnel.tvrec";
+  {
+    World w(16);
+    Recorder rec(path);
+    w.attach(rec);
+    const ItemId wall = w.add({40, 0, 4, 32});
+    rec.label(wall, "wall", "wall");
+    const ItemId bullet = w.add({0, 10, 2, 2});
+    rec.label(bullet, "bullet 1", "bullet");
+    Mover naive(parseMover("discrete"));
+    for (int f = 0; f < 4; ++f) {
+      (void)naive.move(w, bullet, w.rect(bullet).position() + Vec2{32, 0});
+      rec.frame();
+    }
+    w.detach();
+  }
+  open({path});
+  const auto& entries = dbg().checks().failures().entries;
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0].panel, 0u);
+  EXPECT_EQ(entries[0].failure.frame, 1u);
+  EXPECT_EQ(entries[0].failure.kind, ui::FailureKind::tunnelled);
+  EXPECT_EQ(entries[0].failure.what, "tunnelled through wall");
+  EXPECT_EQ(dbg().session().primary().describe(entries[0].failure.item), "bullet 1");
+  // The tab says so, and a click goes there with the bullet traced.
+  dbg().command(Command::failures);
+  frames(2);
+  EXPECT_NE(drawnText().find("tunnelled through wall"), std::string::npos) << drawnText();
+  dbg().goToFailure(0);
+  frames(2);
+  EXPECT_EQ(dbg().currentTick(), 1u);
+  EXPECT_EQ(dbg().session().traced(), entries[0].failure.item);
+}
+
+// A failure's words wrap in the column; the row is as tall as they are, so the next row's
+// "frame 62 call 2" is not written over the last word of "... 32 from the recorded end".
+TEST_F(DebuggerDriver, AFailureRowIsAsTallAsItsWrappedWords) {
+  for (const float w : {1280.0f, 1024.0f}) {
+    resize(w, w == 1280.0f ? 720.0f : 640.0f);
+    open({sampleRecording(), "--what-if", "discrete", "--tab", "failures"});
+    frames(3);
+    ASSERT_GT(dbg().checks().failures().entries.size(), 3u);
+    const std::string rows = drawnText("failure rows");
+    EXPECT_NE(rows.find("tunnelled through wall"), std::string::npos) << rows;
+    std::string where;
+    EXPECT_EQ(overlappingGlyphs("failure rows", &where), 0) << w << ": " << where;
+  }
+}
+
 // The inspector and the world say what happened to the traced move.
 TEST_F(DebuggerDriver, TheInspectorAndTheWorldSayWhatHappened) {
   open({"--scene", "bullets-wall", "--mover", "discrete", "--tick", "2", "--body", "2", "--view",

@@ -178,6 +178,30 @@ void Checks::advance(double budgetMs) {
                    });
 }
 
+void Checks::noteMove(std::size_t panel, const MoveDifference& d, bool recorded) {
+  if (!d.tunnelled && !d.overlapping) return;
+  if (list_.entries.size() >= kMaxListed) return;
+  Failure f;
+  f.frame = d.frame;
+  f.call = d.call;
+  f.item = d.item;
+  f.kind = d.tunnelled ? FailureKind::tunnelled : FailureKind::overlapping;
+  // Named as the recording names it: "tunnelled through wall", "ended inside tile 12".
+  std::string what = d.tunnelled ? "tunnelled" : "ended inside a solid";
+  if (d.solid.valid()) {
+    what = std::string(d.tunnelled ? "tunnelled through " : "ended inside ") +
+           session_->primary().describe(d.solid);
+  }
+  if (!recorded) {
+    // A re-run's move: how far from where the game's own move ended.
+    char by[64];
+    std::snprintf(by, sizeof by, ", %.4g from the recorded end", d.distance);
+    what += by;
+  }
+  f.what = std::move(what);
+  list_.entries.push_back({panel, std::move(f)});
+}
+
 void Checks::collect() {
   if (!session_ || !sims_.empty()) return;
   bool changed = false;
@@ -194,6 +218,8 @@ void Checks::collect() {
       }
       list_.entries.push_back({0, std::move(f)});
     }
+    // The recorded run's own moves that tunnelled or ended inside a solid: the game's.
+    for (const MoveDifference& d : validation_->recordedFailures()) noteMove(0, d, true);
     changed = true;
   }
   for (std::size_t k = 0; k < whatIfs_.size(); ++k) {
@@ -209,25 +235,7 @@ void Checks::collect() {
     if (k == 0) whatIfReport_ = report;
     list_.summary.resize(session_->size());
     list_.summary[k + 1] = whatIfSummary(*report);
-    for (const MoveDifference& d : report->differences) {
-      if (!d.tunnelled && !d.overlapping) continue;
-      if (list_.entries.size() >= kMaxListed) break;
-      Failure f;
-      f.frame = d.frame;
-      f.call = d.call;
-      f.item = d.item;
-      f.kind = d.tunnelled ? FailureKind::tunnelled : FailureKind::overlapping;
-      // Named as the recording names it: "tunnelled through wall", "ended inside tile 12".
-      std::string what = d.tunnelled ? "tunnelled" : "ended inside a solid";
-      if (d.solid.valid()) {
-        what = std::string(d.tunnelled ? "tunnelled through " : "ended inside ") +
-               session_->primary().describe(d.solid);
-      }
-      char by[64];
-      std::snprintf(by, sizeof by, ", %.4g from the recorded end", d.distance);
-      f.what = what + by;
-      list_.entries.push_back({k + 1, std::move(f)});
-    }
+    for (const MoveDifference& d : report->differences) noteMove(k + 1, d, false);
   }
   if (!changed) return;
   std::stable_sort(list_.entries.begin(), list_.entries.end(),

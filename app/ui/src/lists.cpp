@@ -207,8 +207,10 @@ void failuresContents(std::span<Source* const> panels, const FailureList& list,
       std::snprintf(head, sizeof head, "%s %" PRIu64 "   %s", word, e.failure.frame, item.c_str());
     }
     const std::string who = several ? "   " + s.moverName() : std::string();
-    const float whatH = wrapped ? ImGui::CalcTextSize(e.failure.what.c_str(), nullptr, false, wrap).y
-                                : line;
+    // Measured as drawn below: indented, so wrapped 12 px sooner.
+    const float whatH =
+        wrapped ? ImGui::CalcTextSize(e.failure.what.c_str(), nullptr, false, wrap - 12.0f).y
+                : line;
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::PushID(r);
     const bool marked = shown && *shown == static_cast<std::size_t>(r);

@@ -31,6 +31,7 @@ void ValidationJob::start(const ReplaySource::Origin& origin, bool wait) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     divergence_.reset();
+    recordedFailures_.clear();
     error_.clear();
   }
   progress_ = 0;
@@ -45,6 +46,7 @@ void ValidationJob::start(const ReplaySource::Origin& origin, bool wait) {
 
 void ValidationJob::run(const ReplaySource::Origin& origin) {
   std::optional<tv::Divergence> d;
+  std::vector<MoveDifference> failures;
   std::string error;
   bool cancelled = false;
   try {
@@ -56,6 +58,8 @@ void ValidationJob::run(const ReplaySource::Origin& origin) {
       return !cancel_.load();
     });
     cancelled = replay.cancelled();
+    // Then the game's own moves, judged: what the Failures tab lists for the recorded run.
+    if (!cancelled && !cancel_.load()) failures = replay.checkRecorded().recordedFailures;
     if (!cancelled) progress_ = replay.frames();
   } catch (const std::exception& e) {
     error = app::userMessage(e);
@@ -63,6 +67,7 @@ void ValidationJob::run(const ReplaySource::Origin& origin) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     divergence_ = std::move(d);
+    recordedFailures_ = std::move(failures);
     error_ = std::move(error);
   }
   running_ = false;
@@ -72,6 +77,11 @@ void ValidationJob::run(const ReplaySource::Origin& origin) {
 std::optional<tv::Divergence> ValidationJob::divergence() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return divergence_;
+}
+
+std::vector<MoveDifference> ValidationJob::recordedFailures() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return recordedFailures_;
 }
 
 std::string ValidationJob::error() const {

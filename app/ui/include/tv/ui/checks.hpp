@@ -69,6 +69,8 @@ class Checks {
  private:
   void noteSceneFailures();
   void collect();
+  // Lists a recorded move (`recorded`) or a re-run's that tunnelled or ended inside a solid.
+  void noteMove(std::size_t panel, const MoveDifference& d, bool recorded);
 
   Session* session_ = nullptr;
   // A scene's look-ahead: one untraced copy per panel.

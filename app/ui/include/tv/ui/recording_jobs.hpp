@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "tv/record/replay.hpp"
 #include "tv/ui/replay_source.hpp"
@@ -34,6 +35,9 @@ class ValidationJob {
   [[nodiscard]] std::uint64_t progress() const { return progress_.load(); }
   /// The first divergence, once done (none: the replay matched the recording).
   [[nodiscard]] std::optional<tv::Divergence> divergence() const;
+  /// The recorded run's own moves that tunnelled or ended inside a solid (Replay::checkRecorded),
+  /// once done.
+  [[nodiscard]] std::vector<MoveDifference> recordedFailures() const;
   /// Why it could not run (a file that no longer opens), once done.
   [[nodiscard]] std::string error() const;
 
@@ -45,6 +49,7 @@ class ValidationJob {
   std::atomic<std::uint64_t> progress_{0};
   mutable std::mutex mutex_;
   std::optional<tv::Divergence> divergence_;
+  std::vector<MoveDifference> recordedFailures_;
   std::string error_;
 };
 
