@@ -111,7 +111,9 @@ void drawMove(ImDrawList& dl, const Camera& cam, const World& world, const MoveT
       const bool same = g.x == s.x && g.y == s.y;
       const bool clash = !same && std::abs(g.x - s.x) < width && std::abs(g.y - s.y) < 16.0f;
       label(dl, {s.x, s.y - 15}, pal::kSweep, same ? "start, goal" : "start");
-      if (!same) label(dl, {g.x, g.y - (clash ? 29.0f : 15.0f)}, pal::kSweep, "goal");
+      // Stacked: a line above the start's label, wherever the goal is (a goal a little lower
+      // than the start would otherwise put its label back on the start's line).
+      if (!same) label(dl, {g.x, clash ? s.y - 29.0f : g.y - 15.0f}, pal::kSweep, "goal");
     }
   }
   // Hit labels stack in one column beside the first hit: right of it, or left of it when the
