@@ -454,11 +454,14 @@ void Debugger::refreshLive() {
   const std::uint64_t run = l->run();
   for (const std::string& news : l->refresh(!paused_ || jumpToNewest_)) notice_ = news;
   if (l->run() != run) {
-    // A new run: a game connected (again). Its world is a new one: frame it, trace its busiest.
+    // A new run: a game connected (again). Its world is a new one: frame it, trace its busiest,
+    // and follow it as it comes (a pause was the last game's: the new one is not held).
     checks_.reset(*session_, false);
     traceBusiest();
     frameAll();
     follow_ = true;
+    paused_ = false;
+    jumpToNewest_ = false;
   }
   if ((!paused_ || jumpToNewest_) && l->lastFrame() != currentTick()) {
     session_->goTo(l->lastFrame());

@@ -743,9 +743,15 @@ void Debugger::drawWhatIfDialog() {
     if (scene) next.erase(next.begin());  // the first panel is the scene's own
     next.push_back(m);
     compareWith(next, draftUpdates_);
+    // Done: the run shows beside this one, its report in the Failures tab; the dialog would
+    // only cover the world.
+    showWhatIf_ = false;
   }
   ImGui::SameLine();
-  if (ImGui::Button("This run only") && session_->comparing()) compareWith({});
+  if (ImGui::Button("This run only")) {
+    if (session_->comparing()) compareWith({});
+    showWhatIf_ = false;
+  }
   if (!scene) {
     ImGui::PushStyleColor(ImGuiCol_Text, pal::kDim);
     ImGui::TextWrapped(

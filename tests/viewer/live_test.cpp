@@ -147,6 +147,30 @@ TEST_F(LiveDriver, TheStreamSavedValidatesAndAReconnectIsANewRun) {
   second.stop();
 }
 
+// The debugger paused on a game that then left (the end of a game pauses it too): the next game
+// to connect is a new run, followed as it comes, not held on a frame of its start.
+TEST_F(LiveDriver, AGameThatConnectsAfterAPauseIsFollowed) {
+  const std::string address = listen();
+  {
+    Recorder rec(gameTo(address, false));
+    tvtest::ThreadedGame game(rec);
+    ASSERT_TRUE(until([&] { return live().lastFrame() >= 10; }));
+    dbg().command(Command::pause);
+    ASSERT_TRUE(dbg().paused());
+    game.stop();
+    rec.close();
+  }
+  ASSERT_TRUE(until([&] { return live().ended(); }));
+  EXPECT_TRUE(dbg().paused());
+  Recorder again(gameTo(address, false));
+  tvtest::ThreadedGame second(again);
+  ASSERT_TRUE(until([&] { return live().run() == 2 && live().lastFrame() >= 20; }));
+  EXPECT_FALSE(dbg().paused());
+  EXPECT_TRUE(dbg().followingLive());
+  EXPECT_TRUE(until([&] { return dbg().currentTick() >= 20; })) << dbg().currentTick();
+  second.stop();
+}
+
 // A port already taken is one clear message, and nothing else changes.
 TEST_F(LiveDriver, APortInUseIsRefusedNamingIt) {
   LiveReceiverOptions o;

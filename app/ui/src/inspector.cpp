@@ -206,10 +206,13 @@ void inspectorContents(const Source& s, const FailureList* failures, std::size_t
   if (body) ImGui::TextWrapped("velocity (%.1f, %.1f) px/s", body->velocity.x, body->velocity.y);
   const auto moves = s.history();
   if (moves.empty()) {
-    // Say why: a body that has stopped makes no move, so there is nothing to trace.
-    ImGui::TextColored(colour(pal::kDim), "%s",
-                       body && !body->active ? "no move traced: the body has stopped"
-                                             : "no move of it traced yet");
+    // Say why: a body that has stopped makes no move, so there is nothing to trace; an item
+    // not in the world (said above) makes none either.
+    if (s.world().has(id) || body) {
+      ImGui::TextColored(colour(pal::kDim), "%s",
+                         body && !body->active ? "no move traced: the body has stopped"
+                                               : "no move of it traced yet");
+    }
     return;
   }
   if (body && !body->active && moves.back().tick < s.frame()) {

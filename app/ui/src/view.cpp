@@ -397,6 +397,10 @@ void panelStats(Session& s, std::size_t k, float w) {
     const auto b = sim ? sim->bodyOf(*id) : std::nullopt;
     if (b && !sim->simulation().bodies()[*b].active) {
       textFitting({"no move traced: the body has stopped", "stopped: no move"}, pal::kDim);
+    } else if (!src.world().has(*id)) {
+      // A recorded item removed (a bullet that hit), or not added yet.
+      const std::string gone = src.describe(*id) + " is not in the world at this " + frameWord(src);
+      textFitting({gone.c_str(), "not in the world"}, pal::kDim);
     } else {
       textFitting({"no move of it traced yet", "no move yet"}, pal::kDim);
     }
