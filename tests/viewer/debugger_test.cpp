@@ -129,6 +129,10 @@ TEST_F(DebuggerDriver, NoTextIsCutAtAPanelsEdge) {
       {1280, 720, {sampleRecording(), "--view", "follow", "--what-if", "discrete",
                    "--first-failure"}},
       {1024, 640, {sampleRecording(), "--frame", "62", "--call", "2", "--what-if", "discrete"}},
+      {1024, 640, {sampleRecording(), "--what-if", "discrete", "--tab", "failures"}},
+      {1024, 640, {"--scene", "bullets-wall", "--tab", "failures"}},
+      // Three panels: "pushed back out of floor tile 2" is wider than each.
+      {1024, 640, {"--scene", "seam-walk", "--compare", "discrete,substep-discrete,continuous"}},
   };
   for (const Layout& c : cases) {
     resize(c.w, c.h);

@@ -190,5 +190,17 @@ TEST_F(DebuggerDriver, OnlyARecordingsLegendNamesTheCategoryColourAndItsLabelIsW
   }
 }
 
+// Three panels at 1024 px are narrower than "pushed back out of floor tile 2": the words over
+// the move kept their start in the panel and lost the tile's number past its edge. Too wide
+// even as a first clause, they go on two lines, whole.
+TEST_F(DebuggerDriver, WhatHappenedIsWholeInANarrowPanel) {
+  resize(1024, 640);
+  open({"--scene", "seam-walk", "--compare", "discrete,substep-discrete,continuous"});
+  frames(2);
+  const std::string panel = drawnText("###panel0");
+  EXPECT_NE(panel.find("pushed back out of floor"), std::string::npos) << panel;
+  EXPECT_NE(panel.find("tile 2"), std::string::npos) << panel;
+}
+
 }  // namespace
 }  // namespace tv::viewer

@@ -184,8 +184,11 @@ void failuresContents(std::span<Source* const> panels, const FailureList& list,
                        panels.empty() ? "frame" : frameWord(*panels.front()), list.looked);
   }
   if (list.entries.empty()) return;
-  ImGui::TextColored(colour(pal::kDim), "click one: its %s, traced, centred and zoomed",
+  // Wrapped: a narrow column (1024 px) cut it at "zoome".
+  ImGui::PushStyleColor(ImGuiCol_Text, pal::kDim);
+  ImGui::TextWrapped("click one: its %s, traced, centred and zoomed",
                      panels.empty() ? "frame" : frameWord(*panels.front()));
+  ImGui::PopStyleColor();
   // Two lines a row: where and who, then what happened with the column's whole width. A few
   // thousand rows wrap what does not fit; more are drawn only where the list is scrolled to
   // (one fixed height), the whole text on hover.

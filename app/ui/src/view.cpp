@@ -121,10 +121,19 @@ void sayWhatHappened(ImDrawList& dl, const Camera& cam, float coveredBottom, con
                        std::abs(g0.y - s0.y) < 16.0f;
   const float top = std::min({s0.y, g0.y, cam.toScreenMin(hull).y});
   // The whole when it fits the view, else its first clause (the inspector has the whole).
-  const float room = cam.screenMax().x - cam.screenMin().x - 16.0f;
+  // The room is the panel's, as drawn (its clip rect), which may be narrower than the camera's
+  // view: measured on the camera alone, "pushed back out of floor tile 2" lost its "2".
+  const float room = std::min(cam.screenMax().x - cam.screenMin().x - 16.0f,
+                              dl.GetClipRectMax().x - dl.GetClipRectMin().x - 8.0f);
   const std::string& text = ImGui::CalcTextSize(said.text.c_str()).x <= room ? said.text : said.brief;
-  detail::label(dl, {cam.toScreenMin(hull).x, top - (stacked ? 45.0f : 31.0f)},
-                said.bad ? pal::kBad : pal::kGood, text);
+  const ImVec2 at{cam.toScreenMin(hull).x, top - (stacked ? 45.0f : 31.0f)};
+  const ImU32 c = said.bad ? pal::kBad : pal::kGood;
+  if (ImGui::CalcTextSize(text.c_str()).x <= room) {
+    detail::label(dl, at, c, text);
+  } else {
+    // Even the first clause is wider than a narrow panel: on two lines, never cut.
+    detail::labelWrapped(dl, at, c, text, room);
+  }
   (void)coveredBottom;
 }
 
