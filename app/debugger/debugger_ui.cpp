@@ -794,8 +794,8 @@ void Debugger::drawLiveDialogs() {
   };
   if (pathPopup("Listen for a game", openListen_, listenAddress_, "127.0.0.1:7720",
                 "Where the debugger waits for a game streaming live: [HOST:]PORT (127.0.0.1 "
-                "unless a host is given). Run the game with --live and this address (a LOVE game: "
-                "TV_LIVE=address).",
+                "unless a host is given). Run the game with --live and this address (or TV_LIVE=address, "
+                "where the game reads it: tv::liveFromEnvironment).",
                 "Listen"))
     tryListen(listenAddress_);
   if (pathPopup("Save the stream", openSave_, savePath_, "live.tvrec",

@@ -179,7 +179,7 @@ std::vector<std::string> LiveSource::notes() const {
   std::vector<std::string> out = notes_;
   if (window_.run == 0) {
     out.push_back("waiting for a game at " + rx_->address() + ": run one with --live " +
-                  rx_->address() + " (a LÖVE game: TV_LIVE=" + rx_->address() + ")");
+                  rx_->address() + ", or with TV_LIVE=" + rx_->address() + " where it reads it (tv::liveFromEnvironment)");
   } else if (window_.dropped > 0) {
     out.push_back("dropped the oldest " + std::to_string(window_.dropped) +
                   " frames to stay within the receiver's bounds (frames " +
