@@ -141,7 +141,8 @@ void sayWhatHappened(ImDrawList& dl, const Camera& cam, float coveredBottom, con
 
 void syncPanels(ViewState& v, const Session& s) {
   if (v.panels.empty()) v.panels.emplace_back();
-  const DebuggerState& first = v.panels.front();
+  // A copy: push_back below may move the panels, and a reference to the first with them.
+  const DebuggerState first = v.panels.front();
   while (v.panels.size() < s.size()) {
     DebuggerState p;
     p.overlays = first.overlays;
