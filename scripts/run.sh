@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job. Builds Release, then:
-# - with a display: records the example platformer and opens its recording in the debugger
-#   (extra arguments go to tv-debugger instead);
+# - with a display: records the example platformer and opens its recording in the debugger,
+#   re-run under the naive mover beside it, at the first bullet that re-run lets through the
+#   wall, followed (extra arguments go to tv-debugger instead);
 # - without one (or with --headless): renders the before/after comparison images into
 #   out/comparisons/, records the sample game and validates its recording, and prints the
 #   tunnelling table, measured.
@@ -22,7 +23,8 @@ if [ $headless = 0 ] && { [ -n "${DISPLAY:-}" ] || [ -n "${WAYLAND_DISPLAY:-}" ]
       mkdir -p out/recordings
       "$build/app/examples/tv-example-platformer" --frames 600 \
         --record out/recordings/platformer.tvrec >&2
-      exec "$build/app/debugger/tv-debugger" out/recordings/platformer.tvrec
+      exec "$build/app/debugger/tv-debugger" out/recordings/platformer.tvrec \
+        --what-if discrete --first-failure
     fi
     exec "$build/app/debugger/tv-debugger" "$@"
   fi

@@ -1,25 +1,22 @@
 #pragma once
-// The debugger: one scene, one or more movers run in lockstep (one ui::Session each), the time
-// controls over them, and everything drawn around the drawing layer's layouts — the menus,
-// the timeline, the scene picker, Help and the substep sweep.
+// The debugger: one session over any source — a built-in scene, a level file, a recording, a
+// game streaming live — one panel or several in lockstep (movers compared, what-if runs), the
+// time controls over them, and everything drawn around the view: the menu bar, the timeline,
+// the pickers, Help and the substep sweep. Checks beside the view (tv/ui/checks.hpp) find where the
+// run fails; "go" and the Failures tab take the person straight there.
 //
-// Time travel: the sessions' simulations keep a ring of snapshots. Going to tick t restores
-// (or re-runs up to) t - h and ticks the last h ticks again with tracing on, so the inspector
-// and the history overlay show the moves that led to t however it was reached; determinism
-// makes the re-run identical to the first run.
+// [debugger.cpp]     model: opening sources, time, selection, tuning, commands
+// [debugger_ui.cpp]  windows: the frame, keys, menu bar, timeline, pickers, what-if dialog
 
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
-#include <span>
-
-#include "divergence.hpp"
 #include "gl_window.hpp"
 #include "options.hpp"
-#include "recording_debugger.hpp"
 #include "settings.hpp"
 #include "shortcuts.hpp"
 #include "substep_sweep.hpp"
@@ -27,28 +24,53 @@
 #include "tv/mover.hpp"
 #include "tv/sim/params.hpp"
 #include "tv/sim/scene.hpp"
-#include "tv/ui/panels.hpp"
+#include "tv/ui/checks.hpp"
 #include "tv/ui/session.hpp"
+#include "tv/ui/view.hpp"
+
+namespace tv {
+class LiveReceiver;
+}
+namespace tv::ui {
+class LiveSource;
+}
 
 namespace tv::viewer {
+
+/// The File > Open recording... dialog: a path to type, and the .tvrec files of the folder it
+/// names (or the current one) to click. Returns the path chosen, once.
+class OpenRecordingDialog {
+ public:
+  void open() { open_ = true; }
+  [[nodiscard]] std::optional<std::string> draw();
+
+ private:
+  bool open_ = false;
+  std::string path_;
+};
 
 class Debugger {
  public:
   /// Opens what the command line names, with `settings` (may be null) filling in what it does
-  /// not. Throws ui::UsageError on a bad command line.
+  /// not. Throws ui::UsageError on a bad command line, tv::Error for a file that does not open.
   Debugger(const ViewerOptions& options, const Settings* settings);
+  ~Debugger();
+  Debugger(const Debugger&) = delete;
+  Debugger& operator=(const Debugger&) = delete;
 
   /// One frame (between ImGui::NewFrame and ImGui::Render): input, time, then every window.
   /// `seconds` of wall time passed since the last frame.
   void frame(double seconds, std::span<const KeyPress> keys);
-  [[nodiscard]] bool wantsQuit() const {
-    return quit_ || (recording_ && recording_->wantsQuit());
-  }
+  [[nodiscard]] bool wantsQuit() const { return quit_; }
   /// Puts what should survive a restart into `s`.
   void store(Settings& s) const;
-  /// Freezes anything that reads a clock out of the picture (screenshots).
-  void setPinned(bool pinned) { pinned_ = pinned; }
-  void openHelp() { showHelp_ = true; }
+  /// Freezes anything that reads a clock out of the picture (screenshots), and runs the checks
+  /// to their end before anything is drawn.
+  void setPinned(bool pinned);
+  void openHelp() {
+    showHelp_ = true;
+    helpPlacing_ = 3;
+  }
   /// What a command does, as its key or menu item would (tests drive the debugger with it).
   void command(Command c) { run(c); }
   /// What a parameter's slider does on release: sets the draft and re-runs to the same tick.
@@ -57,100 +79,141 @@ class Debugger {
   /// Applies a max substep length picked in the substep sweep: to every substep mover through
   /// the parameter; without one, a comparison gains a substep panel and keeps its others.
   void useSubstepLength(double length);
-  /// Shows a recording instead of the scenes (recording_debugger.hpp); tv::Error for a file
-  /// that does not open. `tryOpenRecording` shows the error instead (a dropped file).
-  RecordingDebugger& openRecording(const std::string& path);
+  /// Opens a recording in place of what is open; tv::Error for a file that does not open
+  /// (nothing changes). `tryOpenRecording` shows the error instead (a dropped file).
+  void openRecording(const std::string& path);
   void tryOpenRecording(const std::string& path);
+  /// Opens a Tiled map or a scene file (File > Open file..., or dropped on the window); a bad
+  /// file is reported in the window and changes nothing.
+  void openFile(const std::string& path);
+  /// The same source re-run by `movers` beside it (a scene's comparison, a recording's what-if
+  /// runs); empty: the source alone.
+  void compareWith(const std::vector<MoverSpec>& movers, bool updatesAsMoves = false);
+  /// What a click on a row of the Failures tab does: that frame (and call), the item traced,
+  /// centred and zoomed on, the inspector showing the failing panel.
+  void goToFailure(std::size_t index);
+  /// What "go" beside "runs differ" does: that frame, the item that differs traced and followed.
+  void goToDifference();
+  /// Waits for games streaming live at `address` ([HOST:]PORT) in place of what is open; tv::Error
+  /// for an address that is malformed or taken (nothing changes). `tryListen` shows it instead.
+  void listen(const std::string& address, std::uint64_t keepFrames = 0,
+              std::uint64_t keepMegabytes = 256);
+  void tryListen(const std::string& address);
+  /// A live game is shown.
+  [[nodiscard]] bool live() const;
+  /// The view goes to each newest frame as it arrives (a live game, until paused or scrubbed).
+  [[nodiscard]] bool followingLive() const { return live() && !paused_; }
+  /// Writes a live game's kept frames to `path` (File > Save the stream); false with the reason
+  /// in message() when it cannot.
+  bool saveStream(const std::string& path);
+  /// Shows frame `f`, call `k` of it, tracing the item labelled `item` (a recording's
+  /// --frame/--call/--item); UsageError naming the flag when it has no such thing.
+  void show(std::uint64_t f, std::optional<std::uint32_t> k, const std::optional<std::string>& item);
 
   // Read-only views of the state, for tests and for whatever is drawn beside the debugger.
-  [[nodiscard]] const std::vector<ui::DebuggerState>& panels() const { return states_; }
-  [[nodiscard]] const std::vector<MoverSpec>& movers() const { return movers_; }
-  [[nodiscard]] const Divergence& divergence() const { return divergence_; }
-  [[nodiscard]] std::uint64_t currentTick() const { return tick(); }
+  [[nodiscard]] const std::vector<ui::DebuggerState>& panels() const { return view_.panels; }
+  [[nodiscard]] const ui::ViewState& view() const { return view_; }
+  [[nodiscard]] ui::Session& session() { return *session_; }
+  [[nodiscard]] const ui::Session& session() const { return *session_; }
+  /// Each panel's mover (a recording's first panel: as recorded, `recorded` false).
+  [[nodiscard]] std::vector<MoverSpec> movers() const;
+  [[nodiscard]] const ui::Checks& checks() const { return checks_; }
+  [[nodiscard]] std::uint64_t currentTick() const { return session_->frame(); }
   [[nodiscard]] bool paused() const { return paused_; }
+  [[nodiscard]] bool following() const { return follow_; }
   [[nodiscard]] const std::string& message() const { return message_; }
   [[nodiscard]] const std::string& notice() const { return notice_; }
   [[nodiscard]] bool helpOpen() const { return showHelp_; }
-
-  /// Opens a Tiled map or a scene file (File > Open..., or dropped on the window); a bad file
-  /// is reported in the window and changes nothing.
-  void openFile(const std::string& path);
   /// Paused with nothing computing in the background: the window may wait for input.
-  [[nodiscard]] bool idle() const {
-    if (recording_) return recording_->idle();
-    return paused_ && !deferred_ && divergence_.done() && (!showSweep_ || sweep_.pending() == 0);
-  }
+  [[nodiscard]] bool idle() const;
+  /// What the status bar says now, in order (tests read it; the bar drops what does not fit).
+  [[nodiscard]] std::vector<std::string> status() const;
 
  private:
-  // -- sessions and time (debugger.cpp) ----------------------------------------------------
-  void build(const sim::SceneDef& scene, const sim::Params& params, std::vector<MoverSpec> movers,
-             std::uint64_t landOn);
+  // -- sources and time (debugger.cpp) -------------------------------------------------------
+  /// Builds a scene's session (one panel per mover) and lands on `landOn`.
+  void buildScene(const sim::SceneDef& scene, const sim::Params& params,
+                  std::vector<MoverSpec> movers, std::uint64_t landOn, ui::SourceKind kind);
   void loadScene(const sim::SceneDef& scene);
   void setMovers(std::vector<MoverSpec> movers);
-  /// Runs to tick `t`; with `stopAtEnd`, no further than the end of a scene that ends first.
-  void goTo(std::uint64_t t, bool stopAtEnd = false);
-  void stepOnce();
+  /// After a new session: fresh checks, views for its panels.
+  void adopt(std::unique_ptr<ui::Session> session, bool keepCamera);
+  [[nodiscard]] bool isScene() const { return session_->primary().sim() != nullptr; }
+  /// Every panel to frame `f` (with `stopAtEnd`, no further than a scene's end).
+  void goTo(std::uint64_t f, bool stopAtEnd = false);
   void advance(double seconds);
-  void select(std::optional<std::size_t> body);
+  void select(std::optional<ItemId> item);
+  void selectCall(std::optional<std::uint32_t> k);
   void applyActions(const ui::Actions& a);
   /// The same, but a restart known to be slow is announced and run on the next frame.
   void applyOrDefer(const ui::Actions& a);
+  void restartFromDraft(bool sameTick);
   void run(Command c);
-  [[nodiscard]] std::uint64_t tick() const;
-  [[nodiscard]] bool compare() const { return sessions_.size() > 1; }
-  [[nodiscard]] Rect followRect() const;
+  void frameAll();
+  void traceBusiest();
   void reportError(const std::string& what);
+  /// A live game: what arrived, and the newest frame while following.
+  void refreshLive();
+  [[nodiscard]] ui::LiveSource* liveSource();
+  [[nodiscard]] const ui::LiveSource* liveSource() const;
 
-  // -- windows (debugger_ui.cpp) -----------------------------------------------------------
+  // -- windows (debugger_ui.cpp) -------------------------------------------------------------
   void handleKeys(std::span<const KeyPress> keys);
   float drawMenuBar();
   void drawTimeline(ImVec2 display, float height);
-  void drawMain(ImVec2 origin, ImVec2 size);
-  void drawCompareSideBySide(ImVec2 origin, ImVec2 size);
-  void drawOverlaid();
   void drawPicker();
   void drawSweep();
+  void drawWhatIfDialog();
+  void drawLiveDialogs();
   void syncCameras();
   /// The mover the substep sweep varies: the first substep mover compared, else the first.
-  [[nodiscard]] const MoverSpec& sweptMover() const;
+  [[nodiscard]] MoverSpec sweptMover() const;
 
+  std::unique_ptr<ui::Session> session_;
+  ui::ViewState view_;
+  ui::Checks checks_;
+
+  // A scene or level: what it was built from (files keep their scenes alive: the background
+  // checks may still point at an earlier one).
   const sim::SceneDef* scene_ = nullptr;
-  // Files opened this session (the command line's first): each keeps its scene alive, since
-  // scene_ and the background studies may still point at an earlier one.
   std::vector<app::SceneSource> files_;
-  std::string pickerPath_;
-  bool focusPath_ = false;  // File > Open file...: the picker opens with its path field focused
   sim::Params params_;
-  std::vector<MoverSpec> movers_;
-  std::vector<std::unique_ptr<ui::Session>> sessions_;
-  std::vector<ui::DebuggerState> states_;  // one per session; states_[0] holds the controls
-  std::optional<std::size_t> selected_;
-  std::size_t inspected_ = 0;  // the comparison panel whose inspector is shown
+  // A recording's what-if runs (its re-runs' movers).
+  bool updatesAsMoves_ = false;
 
   bool paused_ = true;
   double speed_ = 1.0;
-  double clock_ = 0.0;  // simulated seconds not yet drawn
+  double clock_ = 0.0;    // simulated seconds not yet drawn
   double frameMs_ = 0.0;  // wall time per frame, smoothed, for the menu bar
-  std::uint64_t furthest_ = 0;
   bool follow_ = false;
-  bool overlay_ = false;
   bool showHelp_ = false;
+  int helpPlacing_ = 3;  // frames Help is still placed over the column's tabs (the layout settles)
   bool showSweep_ = false;
+  bool showWhatIf_ = false;
   bool openPicker_ = false;
+  bool focusPath_ = false;  // File > Open file...: the picker opens with its path field focused
   bool quit_ = false;
   bool pinned_ = false;
+  bool waited_ = false;     // the last frame waited for input (its time is not a frame's cost)
+  bool deferred_ = false;   // a slow re-run announced last frame, run at the next
+  bool deferredRestart_ = false;  // ... a Restart (to tick 0), not an edit (same tick)
   std::string pickerFilter_;
+  std::string pickerPath_;
   std::string message_;  // the last error, shown in the timeline bar
   std::string notice_;   // news that is not an error ("the scene had ended"), until the next
-  bool waited_ = false;  // the last frame waited for input (its time is not a frame's cost)
-  bool deferred_ = false;  // a slow restart announced last frame, run at the next
-
-  Divergence divergence_;
-  SubstepSweep sweep_;
-
-  // A recording, when one is open, takes over the window (recording_debugger.cpp).
-  std::unique_ptr<RecordingDebugger> recording_;
   OpenRecordingDialog recordingDialog_;
+  SubstepSweep sweep_;
+  // A live game: the receiver (shared with its source), where to listen and save.
+  std::shared_ptr<LiveReceiver> receiver_;
+  bool openListen_ = false, openSave_ = false;
+  bool jumpToNewest_ = false;  // a step was asked: show its frame when it comes
+  double liveChecksAt_ = 0.0;  // seconds of following since the checks last looked
+  std::string listenAddress_ = "127.0.0.1:7720";
+  std::string savePath_ = "live.tvrec";
+  // The what-if dialog's draft.
+  MoverSpec draftWhatIf_{.kind = MoverKind::discrete};
+  double draftSubstep_ = 0.0;  // 0: half the smallest item
+  bool draftUpdates_ = false;
 };
 
 }  // namespace tv::viewer

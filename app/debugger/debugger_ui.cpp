@@ -1,17 +1,17 @@
-// The debugger's windows around the drawing layer's layouts: menus, the timeline, the scene
-// picker, the comparison (side by side or overlaid), Help and the substep sweep; and the
-// keyboard shortcuts.
+// The debugger's windows around the view: the frame, keys, menu bar, timeline, pickers, the
+// what-if dialog and the substep sweep — one of each, for every source.
 //
 // [SECTION] the frame
 // [SECTION] keys
 // [SECTION] menu bar
-// [SECTION] timeline
-// [SECTION] world: one mover, side by side, overlaid
-// [SECTION] scene picker, substep sweep
+// [SECTION] timeline and status
+// [SECTION] pickers and dialogs
 #include <algorithm>
 #include <cctype>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -21,8 +21,11 @@
 #include "timeline.hpp"
 #include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
-#include "tv/ui/layout.hpp"
 #include "tv/ui/palette.hpp"
+#include "tv/ui/replay_source.hpp"
+#include "tv/ui/sim_source.hpp"
+#include "tv/record/live.hpp"
+#include "tv/ui/live_source.hpp"
 
 namespace tv::viewer {
 
@@ -45,85 +48,138 @@ bool menuItem(const char* label, Command c, bool selected = false, bool enabled 
 
 }  // namespace
 
-// [SECTION] the frame ------------------------------------------------------------------------
+// [SECTION] the frame ----------------------------------------------------------------------------
 
 void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
-  if (recording_) {
-    recording_->frame(seconds, keys);
-    if (!recording_->wantsClose()) return;
-    states_[0].overlays = recording_->overlays();
-    recording_.reset();
-    return;
-  }
   // Smoothed over ~10 frames, so the readout is steady enough to read. A frame that waited for
   // input (idle, paused) measures the wait, not the work: left out.
-  if (!waited_)
-    frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
+  if (!waited_) frameMs_ = frameMs_ == 0.0 ? seconds * 1e3 : 0.9 * frameMs_ + 0.1 * seconds * 1e3;
   waited_ = idle();
   if (deferred_) {
     deferred_ = false;
-    ui::Actions restart;
-    restart.restart = true;
-    applyActions(restart);
+    ui::Actions later;
+    later.restart = deferredRestart_;
+    later.apply = !deferredRestart_;
+    applyActions(later);
   }
   handleKeys(keys);
+  refreshLive();
   advance(seconds);
-  // Look ahead for where the movers part, a few milliseconds a frame; screenshots run it to
-  // the end so the marks do not depend on how fast the machine is.
-  divergence_.advance(pinned_ ? 1e9 : 3.0);
-  if (showSweep_) {
-    const MoverSpec& m = sweptMover();
+  // Look ahead for where the run fails, a few milliseconds a frame; screenshots ran it to the
+  // end already (setPinned).
+  checks_.advance(pinned_ ? 1e9 : 3.0);
+  view_.failures = checks_.failures();
+  if (showSweep_ && scene_) {
+    const MoverSpec m = sweptMover();
     // The whole scene where the look-ahead found its end (bounded), else up to now.
-    std::uint64_t horizon = std::max<std::uint64_t>(tick(), 1);
-    if (divergence_.done())
-      horizon = std::max(horizon, std::min<std::uint64_t>(divergence_.known(), 600));
+    std::uint64_t horizon = std::max<std::uint64_t>(currentTick(), 1);
+    if (checks_.done()) horizon = std::max(horizon, std::min<std::uint64_t>(checks_.known(), 600));
     if (sweep_.stale(*scene_, params_, m, horizon)) sweep_.reset(*scene_, params_, m, horizon);
     do {
     } while (sweep_.advance() && pinned_);
+  }
+  for (auto& st : view_.panels) {
+    st.paused = paused_;
+    st.cameraMoved = false;
+  }
+  if (follow_) {
+    const Rect r = session_->followView();
+    for (auto& st : view_.panels) st.frameView = r;
   }
 
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float top = drawMenuBar();
   const ImGuiStyle& style = ImGui::GetStyle();
+  // Three rows: the buttons, the bar, and what the checks found (never crowded out by the
+  // buttons: a long first failure and "movers differ" both fit at 1024 px).
   const float bottom =
-      ImGui::GetFrameHeight() * 2.0f + style.ItemSpacing.y + style.WindowPadding.y * 2.0f;
+      ImGui::GetFrameHeight() * 3.0f + style.ItemSpacing.y * 2.0f + style.WindowPadding.y * 2.0f;
   const ImVec2 origin{0.0f, top};
   const ImVec2 size{display.x, std::max(display.y - top - bottom, 100.0f)};
-  drawMain(origin, size);
-  // After the world and its panels, so a panel that runs long never hides the timeline.
+  const ui::Actions a = ui::sessionView(*session_, view_, origin, size);
+  syncCameras();
+  // A zoom or pan ends following: the person took the camera.
+  if (follow_ && !view_.panels[0].frameView) follow_ = false;
+  applyOrDefer(a);
+  // After the view, so a panel that runs long never hides the timeline.
   drawTimeline(display, bottom);
   if (showHelp_) {
-    // The width of the column of controls (see drawCompareSideBySide and ui::debuggerLayout).
-    const float side = compare() && !overlay_ ? std::clamp(display.x * 0.30f, 340.0f, 440.0f)
-                                              : std::clamp(display.x * 0.35f, 340.0f, 480.0f);
-    drawHelp(&showHelp_, {display.x - side, top}, {side, size.y});
+    // Over the column's tabs: the world (the moment that matters) and the controls above them
+    // stay in view; a person who wants it elsewhere drags it.
+    drawHelp(&showHelp_, view_.tabsPos, view_.tabsSize, helpPlacing_ > 0);
+    if (helpPlacing_ > 0) --helpPlacing_;
   }
-  if (showSweep_) drawSweep();
+  if (showSweep_ && scene_) drawSweep();
+  if (showWhatIf_) drawWhatIfDialog();
+  drawLiveDialogs();
   drawPicker();
   if (const auto path = recordingDialog_.draw()) tryOpenRecording(*path);
 }
 
-// [SECTION] keys -----------------------------------------------------------------------------
+void Debugger::syncCameras() {
+  // The panels are the same size: a zoom or pan in one is applied to all, so the runs are
+  // always compared over the same ground. The camera itself is copied (centre and scale; each
+  // panel places it on its own screen rect): re-framing the view would fit it inside the
+  // panel's safe area and zoom out a little on every frame of a drag.
+  for (std::size_t k = 0; k < view_.panels.size(); ++k) {
+    if (!view_.panels[k].cameraMoved) continue;
+    const ui::Camera cam = view_.panels[k].camera;
+    for (auto& st : view_.panels) {
+      st.camera = cam;
+      st.frameView.reset();
+      st.cameraMoved = false;
+    }
+    return;
+  }
+}
+
+// [SECTION] keys ---------------------------------------------------------------------------------
 
 void Debugger::handleKeys(std::span<const KeyPress> keys) {
   const ImGuiIO& io = ImGui::GetIO();
-  // A text field being edited, or a modal picker, keeps the keys.
-  if (io.WantCaptureKeyboard || io.WantTextInput) return;
+  // A text field being edited, or a modal picker, keeps the keys (a space typed in a search
+  // field is a space, not Play).
+  if (io.WantCaptureKeyboard || io.WantTextInput || 
+      ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel))
+    return;
   for (const KeyPress& k : keys) {
     if (k.mods & GLFW_MOD_CONTROL) {
       if (k.key == GLFW_KEY_O) run(Command::openScene);
+      if (k.key == GLFW_KEY_R) run(Command::openRecording);
       if (k.key == GLFW_KEY_Q) run(Command::quit);
-    } else if (k.key == GLFW_KEY_HOME) {
-      run(Command::frameAll);
-    } else if (k.key == GLFW_KEY_F1) {
-      run(Command::help);
-    } else if (k.key == GLFW_KEY_ESCAPE) {
-      // The topmost window closes (the scene picker closes itself).
-      if (showHelp_) {
-        showHelp_ = false;
-      } else if (showSweep_) {
-        showSweep_ = false;
-      }
+      continue;
+    }
+    switch (k.key) {
+      case GLFW_KEY_HOME:
+        run(Command::frameAll);
+        break;
+      case GLFW_KEY_F1:
+        run(Command::help);
+        break;
+      case GLFW_KEY_DOWN:
+        run(Command::nextCall);
+        break;
+      case GLFW_KEY_UP:
+        run(Command::previousCall);
+        break;
+      case GLFW_KEY_ENTER:
+      case GLFW_KEY_KP_ENTER:
+        run(Command::frameEnd);
+        break;
+      case GLFW_KEY_ESCAPE:
+        // The topmost window closes (the pickers close themselves).
+        if (showHelp_) {
+          showHelp_ = false;
+        } else if (showWhatIf_) {
+          showWhatIf_ = false;
+        } else if (showSweep_) {
+          showSweep_ = false;
+        } else if (session_->call()) {
+          run(Command::frameEnd);
+        }
+        break;
+      default:
+        break;
     }
   }
   if (io.KeyCtrl) return;
@@ -162,8 +218,20 @@ void Debugger::handleKeys(std::span<const KeyPress> keys) {
       case 'v':
         run(Command::overlay);
         break;
+      case 'w':
+        run(Command::whatIf);
+        break;
       case 't':
         run(Command::sweep);
+        break;
+      case 'i':
+        run(Command::items);
+        break;
+      case 'x':
+        run(Command::failures);
+        break;
+      case 'g':
+        run(Command::firstFailure);
         break;
       case '[':
         run(Command::previousScene);
@@ -180,19 +248,23 @@ void Debugger::handleKeys(std::span<const KeyPress> keys) {
   }
 }
 
-// [SECTION] menu bar -------------------------------------------------------------------------
+// [SECTION] menu bar -----------------------------------------------------------------------------
 
 float Debugger::drawMenuBar() {
   if (!ImGui::BeginMainMenuBar()) return 0.0f;
   std::optional<Command> chosen;
-  const auto item = [&](const char* label, Command c, bool selected = false) {
-    if (menuItem(label, c, selected)) chosen = c;
+  const auto item = [&](const char* label, Command c, bool selected = false, bool enabled = true) {
+    if (menuItem(label, c, selected, enabled)) chosen = c;
   };
+  const bool scene = isScene();
   if (ImGui::BeginMenu("File")) {
-    item("Open scene...", Command::openScene);
-    if (ImGui::MenuItem("Open recording...")) recordingDialog_.open();
-    if (ImGui::MenuItem("Open file...")) openPicker_ = focusPath_ = true;  // the picker's path field
-    item("Restart", Command::restart);
+    item("Open scene or level...", Command::openScene);
+    if (ImGui::MenuItem("Open level file (map, scene file)...")) openPicker_ = focusPath_ = true;
+    item("Open recording...", Command::openRecording);
+    if (ImGui::MenuItem("Listen for a game...")) openListen_ = true;
+    if (ImGui::MenuItem("Save the stream...", nullptr, false, live())) openSave_ = true;
+    if (!scene && ImGui::MenuItem("Validate again")) checks_.reset(*session_, pinned_);
+    item(scene ? "Restart" : "First frame", Command::restart);
     ImGui::Separator();
     item("Quit", Command::quit);
     ImGui::EndMenu();
@@ -218,29 +290,39 @@ float Debugger::drawMenuBar() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Movers")) {
-    ImGui::TextColored(colour(pal::kDim), compare() ? "compared (lockstep):" : "mover:");
+    // A scene's panels are its movers in lockstep; a recording's are what-if re-runs beside it.
+    ImGui::TextColored(colour(pal::kDim), "%s",
+                       scene ? (session_->comparing() ? "compared (lockstep):" : "mover:")
+                             : "what-if runs beside the recording:");
+    const std::vector<MoverSpec> now = movers();
     for (const MoverEntry& entry : moverTable()) {
       const std::string n(entry.name);
-      const auto at = std::find_if(movers_.begin(), movers_.end(),
+      const auto at = std::find_if(now.begin(), now.end(),
                                    [&](const MoverSpec& m) { return m.name() == n; });
-      const bool on = at != movers_.end();
+      const bool on = at != now.end();
       if (ImGui::MenuItem(n.c_str(), nullptr, on)) {
-        std::vector<MoverSpec> next = movers_;
-        if (!compare()) {
+        std::vector<MoverSpec> next = now;
+        if (scene && !session_->comparing()) {
           next = {entry.spec};
-        } else if (on && next.size() > 1) {
-          next.erase(next.begin() + (at - movers_.begin()));
-        } else if (!on) {
+        } else if (on) {
+          next.erase(next.begin() + (at - now.begin()));
+        } else {
           next.push_back(entry.spec);
         }
-        setMovers(std::move(next));
+        if (scene) {
+          setMovers(std::move(next));
+        } else {
+          compareWith(next, updatesAsMoves_);
+        }
       }
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(entry.description).c_str());
     }
     ImGui::Separator();
-    item(compare() ? "One mover" : "Compare discrete / substep / continuous", Command::compare);
-    if (menuItem("Overlaid in one view", Command::overlay, overlay_, compare()))
-      chosen = Command::overlay;
+    item(session_->comparing() ? "One panel" : (scene ? "Compare discrete / substep / continuous"
+                                                      : "What-if: discrete"),
+         Command::compare);
+    item("Overlaid in one view", Command::overlay, view_.overlaid, session_->comparing());
+    item("What-if under another mover...", Command::whatIf, showWhatIf_);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Time")) {
@@ -248,7 +330,10 @@ float Debugger::drawMenuBar() {
     item("Single step", Command::step);
     item("Step back", Command::stepBack);
     item("Step forward", Command::stepForward);
-    item("Restart", Command::restart);
+    item("Next call", Command::nextCall);
+    item("Previous call", Command::previousCall);
+    item("End of frame", Command::frameEnd);
+    item(scene ? "Restart" : "First frame", Command::restart);
     ImGui::Separator();
     for (const double s : kSpeeds) {
       char label[16];
@@ -261,11 +346,17 @@ float Debugger::drawMenuBar() {
   }
   if (ImGui::BeginMenu("View")) {
     item("Frame everything", Command::frameAll);
-    item("Follow the traced body", Command::follow, follow_);
-    item("Substep sweep", Command::sweep, showSweep_);
+    item("Follow the traced move", Command::follow, follow_);
+    item("Failures", Command::failures);
+    item("Go to the first failure", Command::firstFailure, false,
+         !checks_.failures().entries.empty());
+    item("Items (search)", Command::items);
+    item("Substep sweep", Command::sweep, showSweep_, scene);
     if (ImGui::BeginMenu("Overlays")) {
       for (const ui::OverlayToggle& t : ui::overlayToggles()) {
-        ImGui::MenuItem(t.name, nullptr, &(states_[0].overlays.*t.flag));
+        if (ImGui::MenuItem(t.name, nullptr, &(view_.panels[0].overlays.*t.flag))) {
+          for (auto& st : view_.panels) st.overlays = view_.panels[0].overlays;
+        }
       }
       ImGui::EndMenu();
     }
@@ -294,7 +385,45 @@ float Debugger::drawMenuBar() {
   return h;
 }
 
-// [SECTION] timeline -------------------------------------------------------------------------
+// [SECTION] timeline and status ------------------------------------------------------------------
+
+std::vector<std::string> Debugger::status() const {
+  std::vector<std::string> out;
+  if (!message_.empty()) {
+    out.push_back(message_);
+    return out;
+  }
+  if (!notice_.empty()) out.push_back(notice_);
+  const char* unit = isScene() ? "tick" : "frame";
+  if (const auto f = checks_.firstFailure()) {
+    out.push_back("first failure: " + std::string(unit) + " " + std::to_string(*f) + ", " +
+                  checks_.failureText());
+  }
+  if (const auto d = checks_.firstDifference(); d && session_->comparing()) {
+    out.push_back(std::string(session_->whatIf() ? "runs differ from frame " : "movers differ from tick ") +
+                  std::to_string(*d));
+  }
+  if (const ui::ValidationJob* v = checks_.validation()) {
+    if (v->running()) {
+      out.push_back("validating: frame " + std::to_string(v->progress()));
+    } else if (!v->error().empty()) {
+      out.push_back("not validated: " + v->error());
+    } else if (v->done() && !v->divergence()) {
+      const ui::ReplaySource* r = session_->primary().replay();
+      if (r && r->recording().summary().damagedAt) {
+        out.push_back("the file is cut or damaged at byte " +
+                      std::to_string(*r->recording().summary().damagedAt) + ": frames 0.." +
+                      std::to_string(r->recording().summary().frames - 1) + " checked, and they match");
+      } else {
+        out.push_back("valid: the replay matches the recording");
+      }
+    }
+  }
+  if (!checks_.firstFailure() && checks_.done() && isScene()) {
+    out.push_back("no failure in " + std::to_string(checks_.known()) + " ticks");
+  }
+  return out;
+}
 
 void Debugger::drawTimeline(ImVec2 display, float h) {
   ImGui::SetNextWindowPos({0.0f, display.y - h}, ImGuiCond_Always);
@@ -311,11 +440,26 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
     if (ImGui::Button(text)) chosen = c;
     ImGui::SameLine();
   };
+  const bool scene = isScene();
   button("Back", Command::stepBack);
-  button(paused_ ? "Play" : "Pause", Command::pause);
-  button("Step", Command::step);
+  if (const ui::LiveSource* l = liveSource()) {
+    // A game that allows it is held and stepped from here; any game is followed or not.
+    if (l->controllable()) {
+      button(paused_ ? "Resume game" : "Pause game", Command::pause);
+      button("Step game", Command::step);
+    } else {
+      button(paused_ ? "Follow" : "Stop following", Command::pause);
+    }
+  } else {
+    button(paused_ ? "Play" : "Pause", Command::pause);
+  }
   button("Forward", Command::stepForward);
-  button("Restart", Command::restart);
+  // Calls only where a frame has them to step through.
+  if (!session_->calls().empty() || !scene) {
+    button("Call", Command::previousCall);
+    button("Call", Command::nextCall);
+  }
+  button(scene ? "Restart" : "First", Command::restart);
   // The playback rate (not the bodies' --speed): a short list, labelled before the widget.
   ImGui::AlignTextToFramePadding();
   ImGui::TextColored(colour(pal::kDim), "playback");
@@ -333,233 +477,194 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   ImGui::SameLine();
   ImGui::TextColored(colour(pal::kDim), "|");
   ImGui::SameLine();
-  const std::uint64_t last = std::max({furthest_, divergence_.known(), tick(), std::uint64_t{1}});
-  ImGui::Text("tick %" PRIu64 " of %" PRIu64 "%s", tick(), last, divergence_.done() ? "" : "+");
+  const std::uint64_t first = session_->firstFrame();
+  const std::uint64_t last =
+      std::max({session_->lastFrame(), checks_.known(), currentTick(), first + 1});
+  const char* unit = scene ? "tick" : "frame";
+  ImGui::Text("%s %" PRIu64 " of %" PRIu64 "%s", unit, currentTick(), last,
+              checks_.done() || !scene ? "" : "+");
+
   TimelineMarks marks;
-  marks.known = divergence_.known();
-  marks.failure = divergence_.firstFailure();
-  marks.failureText = divergence_.failureText();
-  if (compare()) marks.difference = divergence_.firstDifference();
-  ImGui::SameLine();
-  // Each note goes on the row whole, in its short form when the long one does not fit; the
-  // full text is on hover.
+  marks.unit = unit;
+  marks.first = first;
+  marks.known = checks_.known();
+  marks.failure = checks_.firstFailure();
+  marks.failureText = checks_.failureText();
+  if (session_->comparing()) marks.difference = checks_.firstDifference();
+  if (checks_.whatIf()) marks.implausible = checks_.whatIf()->firstImplausibleFrame;
+  for (const auto& e : checks_.failures().entries) {
+    if (marks.failures.empty() || marks.failures.back() != e.failure.frame)
+      marks.failures.push_back(e.failure.frame);
+  }
+  ImGui::Dummy({0.0f, 0.0f});  // ends the row of buttons
+  if (auto to = timelineBar("##timeline", currentTick(), last, marks, ImGui::GetContentRegionAvail().x)) {
+    paused_ = true;
+    if (*to != currentTick()) goTo(*to);
+  }
+  // The status row. Each note goes on the row whole, in its short form when the long one does
+  // not fit; the full text is on hover. What does not fit at all moves to the row's tooltip,
+  // never dropped without a trace: the row says how many more there are.
   const float go = ImGui::CalcTextSize("go").x + ImGui::GetStyle().FramePadding.x * 2.0f +
                    ImGui::GetStyle().ItemSpacing.x * 2.0f;
-  const auto note = [&](ImU32 c, const char* full, const char* brief, const char* hover) {
-    const float room = ImGui::GetContentRegionAvail().x - go;
-    const char* text = ImGui::CalcTextSize(full).x <= room ? full : brief;
-    if (ImGui::CalcTextSize(text).x > room) return false;
-    ImGui::TextColored(colour(c), "%s", text);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hover);
+  std::vector<std::string> dropped;
+  bool firstNote = true;
+  const auto note = [&](ImU32 c, const std::string& full, const std::string& brief,
+                        const std::string& hover, bool withGo) {
+    const float more = ImGui::CalcTextSize("  (+9 more)").x;
+    const float bar = firstNote ? 0.0f : ImGui::CalcTextSize("|").x + ImGui::GetStyle().ItemSpacing.x;
+    const float room = ImGui::GetContentRegionAvail().x - (withGo ? go : 0.0f) - more - bar;
+    const std::string& text = ImGui::CalcTextSize(full.c_str()).x <= room ? full : brief;
+    if (ImGui::CalcTextSize(text.c_str()).x > room) {
+      dropped.push_back(hover);
+      return false;
+    }
+    if (!firstNote) {
+      ImGui::TextColored(colour(pal::kDim), "|");
+      ImGui::SameLine();
+    }
+    ImGui::TextColored(colour(c), "%s", text.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hover.c_str());
     ImGui::SameLine();
+    firstNote = false;
     return true;
   };
   if (!message_.empty()) {
-    const std::string full = "|  " + message_;
-    (void)note(pal::kBad, full.c_str(), "|  refused: hover, or see the panel", message_.c_str());
-  } else if (!notice_.empty()) {
-    const std::string full = "|  " + notice_;
-    (void)note(pal::kRender, full.c_str(), "|  ended", notice_.c_str());
+    (void)note(pal::kBad, message_, "refused: hover, or see the panel", message_, false);
   } else {
+    if (const ui::LiveSource* l = liveSource()) {
+      std::string state;
+      if (l->run() == 0) {
+        state = "live: waiting for a game at " + listenAddress_;
+      } else if (l->ended()) {
+        state = "live: the game left (run " + std::to_string(l->run()) + ")";
+      } else {
+        state = std::string("live: ") + (paused_ ? (l->controllable() ? "game held" : "not following")
+                                                  : "following the newest frame");
+      }
+      (void)note(l->ended() || l->run() == 0 ? pal::kDim : pal::kGood, state, "live", state, false);
+      if (l->dropped() > 0) {
+        const std::string d = "dropped the oldest " + std::to_string(l->dropped()) + " frames";
+        (void)note(pal::kRender, d, "dropped: hover", l->notes().back(), false);
+      }
+    }
+    if (!notice_.empty()) (void)note(pal::kRender, notice_, "note: hover", notice_, false);
     if (marks.failure) {
-      char full[200], brief[64];
-      std::snprintf(full, sizeof full, "|  first failure: tick %" PRIu64 ", %s", *marks.failure,
-                    marks.failureText.c_str());
-      std::snprintf(brief, sizeof brief, "|  failure: tick %" PRIu64, *marks.failure);
-      if (note(pal::kBad, full, brief, marks.failureText.c_str())) {
-        if (ImGui::SmallButton("go##failure")) goTo(*marks.failure);
+      const std::string full = std::string("first failure: ") + unit + " " +
+                               std::to_string(*marks.failure) + ", " + marks.failureText;
+      const std::string brief = std::string("failure: ") + unit + " " + std::to_string(*marks.failure);
+      if (note(pal::kBad, full, brief, marks.failureText, true)) {
+        if (ImGui::SmallButton("go##failure")) chosen = Command::firstFailure;
         ImGui::SameLine();
       }
     }
     if (marks.difference) {
-      char full[96], brief[64];
-      std::snprintf(full, sizeof full, "|  movers differ from tick %" PRIu64, *marks.difference);
-      std::snprintf(brief, sizeof brief, "|  differ: %" PRIu64, *marks.difference);
-      if (note(pal::kRender, full, brief, "the first tick whose state hashes differ")) {
-        if (ImGui::SmallButton("go##difference")) goTo(*marks.difference);
+      const std::string full = std::string(session_->whatIf() ? "runs differ from frame "
+                                                              : "movers differ from tick ") +
+                               std::to_string(*marks.difference);
+      const std::string brief = "differ: " + std::to_string(*marks.difference);
+      if (note(pal::kRender, full, brief,
+               "the first " + std::string(unit) + " where the panels' runs differ", true)) {
+        if (ImGui::SmallButton("go##difference")) goToDifference();
         ImGui::SameLine();
       }
     }
-    if (!marks.failure && divergence_.done()) {
-      ImGui::TextColored(colour(pal::kGood), "|  no failure in %" PRIu64 " ticks", marks.known);
+    if (const ui::ValidationJob* v = checks_.validation()) {
+      if (v->running()) {
+        char text[96];
+        std::snprintf(text, sizeof text, "validating: frame %" PRIu64, v->progress());
+        (void)note(pal::kDim, text, "validating", text, false);
+      } else if (!v->error().empty()) {
+        (void)note(pal::kBad, "not validated: " + v->error(), "not validated", v->error(), false);
+      } else if (v->done() && !v->divergence()) {
+        const ui::ReplaySource* r = session_->primary().replay();
+        if (r && r->recording().summary().damagedAt) {
+          const std::string text = "the file is cut or damaged at byte " +
+                                   std::to_string(*r->recording().summary().damagedAt) +
+                                   ": only the frames before it were checked, and they match";
+          (void)note(pal::kBad, text, "damaged file: hover", text, false);
+        } else {
+          (void)note(pal::kGood, "valid: the replay matches the recording", "valid",
+                     "the replay matches the recording bit for bit", false);
+        }
+      }
+    }
+    if (!marks.failure && checks_.done() && scene) {
+      char text[64];
+      std::snprintf(text, sizeof text, "no failure in %" PRIu64 " ticks", checks_.known());
+      (void)note(pal::kGood, text, "no failure", text, false);
+    }
+    if (!dropped.empty()) {
+      ImGui::TextColored(colour(pal::kDim), "  (+%zu more)", dropped.size());
+      if (ImGui::IsItemHovered()) {
+        std::string all;
+        for (const std::string& d : dropped) all += (all.empty() ? "" : "\n") + d;
+        ImGui::SetTooltip("%s", all.c_str());
+      }
       ImGui::SameLine();
     }
   }
-  ImGui::Dummy({0.0f, 0.0f});  // ends the row of buttons
-  if (auto to = timelineBar("##timeline", tick(), last, marks, ImGui::GetContentRegionAvail().x)) {
-    paused_ = true;
-    if (*to != tick()) goTo(*to);
-  }
+  ImGui::Dummy({0.0f, 0.0f});  // ends the status row
   ImGui::End();
   if (chosen) run(*chosen);
 }
 
-// [SECTION] world: one mover, side by side, overlaid -----------------------------------------
-
-void Debugger::drawMain(ImVec2 origin, ImVec2 size) {
-  for (auto& st : states_) {
-    st.paused = paused_;
-    st.cameraMoved = false;
-  }
-  if (follow_) {
-    const Rect r = followRect();
-    for (auto& st : states_) st.frameView = r;
-  }
-  if (compare() && !overlay_) {
-    drawCompareSideBySide(origin, size);
-  } else {
-    const ui::Actions a = ui::debuggerLayout(*sessions_.front(), states_[0], origin, size);
-    if (compare()) drawOverlaid();
-    // A zoom or pan ends following: the person took the camera.
-    if (follow_ && !states_[0].frameView) follow_ = false;
-    applyOrDefer(a);
-  }
-}
-
-void Debugger::drawCompareSideBySide(ImVec2 origin, ImVec2 size) {
-  const float side = std::clamp(size.x * 0.30f, 340.0f, 440.0f);
-  for (std::size_t k = 1; k < states_.size(); ++k) states_[k].overlays = states_[0].overlays;
-  std::vector<ui::Session*> raw;
-  for (auto& s : sessions_) raw.push_back(s.get());
-  char title[256];
-  std::snprintf(title, sizeof title,
-                "%s   tick %" PRIu64
-                "   %s %.2gx   |   speed %g px/s, tile %g px, dt %.2f ms   |   "
-                "traced: %s",
-                scene_->name.c_str(), tick(), paused_ ? "paused" : "running", speed_,
-                params_.get(sim::param::speed), params_.get(sim::param::tile),
-                params_.get(sim::param::dt) * 1000.0,
-                selected_ ? ("body " + std::to_string(*selected_)).c_str() : "none");
-  // Legend columns of at least ~150 px keep its labels whole.
-  const int columns = std::clamp(static_cast<int>((size.x - side) / 150.0f), 3, 8);
-  const auto pick =
-      ui::comparisonLayout(raw, states_, title, origin, {size.x - side, size.y}, columns);
-  syncCameras();
-  if (follow_ && !states_[0].frameView) follow_ = false;
-
-  ImGui::SetNextWindowPos({origin.x + size.x - side, origin.y}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({side, 0}, ImGuiCond_Always);
-  ui::Actions a;
-  float y = 0.0f;
-  if (ImGui::Begin("Scene and mover", nullptr, kFixed)) {
-    ImGui::TextColored(colour(pal::kDim), "parameters apply to every compared mover");
-    a = ui::controlsContents(*sessions_.front(), states_[0]);
-    y = ImGui::GetWindowHeight();
-  }
-  ImGui::End();
-  ImGui::SetNextWindowPos({origin.x + size.x - side, origin.y + y}, ImGuiCond_Always);
-  ImGui::SetNextWindowSize({side, std::max(size.y - y, 60.0f)}, ImGuiCond_Always);
-  char name[96];
-  std::snprintf(name, sizeof name, "Inspector: %s###Inspector", movers_[inspected_].name().c_str());
-  if (ImGui::Begin(name, nullptr, kFixed)) ui::inspectorContents(*sessions_[inspected_]);
-  ImGui::End();
-  if (pick) {
-    inspected_ = pick->panel;
-    a.select = pick->body;
-  }
-  applyOrDefer(a);
-}
-
-void Debugger::syncCameras() {
-  // The panels are the same size: a zoom or pan in one is applied to all, so the movers are
-  // always compared over the same ground. The camera itself is copied (centre and scale; each
-  // panel places it on its own screen rect): re-framing the view would fit it inside the
-  // panel's safe area and zoom out a little on every frame of a drag.
-  for (std::size_t k = 0; k < states_.size(); ++k) {
-    if (!states_[k].cameraMoved) continue;
-    const ui::Camera cam = states_[k].camera;
-    for (auto& st : states_) {
-      st.camera = cam;
-      st.frameView.reset();
-      st.cameraMoved = false;
-    }
-    return;
-  }
-}
-
-void Debugger::drawOverlaid() {
-  // Appends to the world view's window, so the other movers are drawn under the panels.
-  ImGui::Begin("World");
-  ImDrawList& dl = *ImGui::GetWindowDrawList();
-  const ui::Camera& cam = states_[0].camera;
-  dl.PushClipRect(cam.screenMin(), cam.screenMax(), true);
-  for (std::size_t k = 1; k < sessions_.size(); ++k) {
-    const ImU32 tint = pal::kCompareTints[(k - 1) % std::size(pal::kCompareTints)];
-    const sim::Simulation& s = sessions_[k]->sim();
-    for (const sim::Body& b : s.bodies()) {
-      if (!cam.sees(b.rect)) continue;
-      dl.AddRect(cam.toScreenMin(b.rect), cam.toScreenMax(b.rect), tint, 0.0f, 0, 1.5f);
-    }
-    const auto moves = sessions_[k]->moves();
-    if (!moves.empty()) {
-      const MoveTrace& m = moves.back().trace;
-      const Rect end = m.start.at(m.final);
-      dl.AddLine(cam.toScreen(m.start.center()), cam.toScreen(end.center()), tint, 2.0f);
-    }
-  }
-  dl.PopClipRect();
-  ImGui::End();
-
-  // Which outline is which mover, under the HUD.
-  ImGui::SetNextWindowBgAlpha(0.82f);
-  ImGui::SetNextWindowPos({cam.screenMin().x + 8.0f, cam.screenMin().y + states_[0].coveredTop},
-                          ImGuiCond_Always);
-  if (ImGui::Begin("Overlaid", nullptr,
-                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                       ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                       ImGuiWindowFlags_NoNav)) {
-    ImGui::Text("%s: the usual colours", movers_[0].name().c_str());
-    for (std::size_t k = 1; k < sessions_.size(); ++k) {
-      const ImU32 tint = pal::kCompareTints[(k - 1) % std::size(pal::kCompareTints)];
-      const sim::Counters& c = sessions_[k]->sim().counters();
-      ImGui::TextColored(colour(tint), "%s: outlines and path   (tunnelled %" PRIu64 ")",
-                         movers_[k].name().c_str(), c.tunnelled);
-    }
-  }
-  ImGui::End();
-}
-
-// [SECTION] scene picker, substep sweep ------------------------------------------------------
+// [SECTION] pickers and dialogs ------------------------------------------------------------------
 
 void Debugger::drawPicker() {
   if (openPicker_) {
-    ImGui::OpenPopup("Open scene");
+    ImGui::OpenPopup("Open scene or level");
     pickerFilter_.clear();
     openPicker_ = false;
   }
-  ImGui::SetNextWindowSize({460, 0}, ImGuiCond_Always);
+  const float width = std::min(ImGui::GetIO().DisplaySize.x - 40.0f, 640.0f);
+  ImGui::SetNextWindowSize({width, 0}, ImGuiCond_Always);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
-  if (!ImGui::BeginPopupModal("Open scene", nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
+  if (!ImGui::BeginPopupModal("Open scene or level", nullptr, ImGuiWindowFlags_NoSavedSettings))
+    return;
   if (ImGui::IsWindowAppearing() && !focusPath_) ImGui::SetKeyboardFocusHere();
   char buffer[128];
   std::snprintf(buffer, sizeof buffer, "%s", pickerFilter_.c_str());
-  const bool enter =
-      ImGui::InputTextWithHint("##filter", "type to filter, Enter opens the first", buffer,
-                               sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SetNextItemWidth(-1.0f);
+  const bool enter = ImGui::InputTextWithHint("##filter", "type to filter, Enter opens the first",
+                                              buffer, sizeof buffer,
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
   pickerFilter_ = buffer;
   std::string lower = pickerFilter_;
   std::transform(lower.begin(), lower.end(), lower.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   const sim::SceneDef* first = nullptr;
   const sim::SceneDef* chosen = nullptr;
-  for (const sim::SceneDef& s : sim::builtinScenes().all()) {
-    std::string hay = s.category + " " + s.name + " " + s.description;
-    std::transform(hay.begin(), hay.end(), hay.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (hay.find(lower) == std::string::npos) continue;
-    if (!first) first = &s;
-    char label[160];
-    std::snprintf(label, sizeof label, "%-16s %-11s %s", s.name.c_str(), s.category.c_str(),
-                  s.description.c_str());
-    if (ImGui::Selectable(label, &s == first)) chosen = &s;
+  // Name and category in columns, the description beside them wrapped: never cut.
+  if (ImGui::BeginTable("scenes", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed,
+                            ImGui::CalcTextSize("bullets-enemies  ").x);
+    ImGui::TableSetupColumn("category", ImGuiTableColumnFlags_WidthFixed,
+                            ImGui::CalcTextSize("Tunnelling  ").x);
+    ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+    for (const sim::SceneDef& s : sim::builtinScenes().all()) {
+      std::string hay = s.category + " " + s.name + " " + s.description;
+      std::transform(hay.begin(), hay.end(), hay.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (hay.find(lower) == std::string::npos) continue;
+      if (!first) first = &s;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      if (ImGui::Selectable(s.name.c_str(), &s == first, ImGuiSelectableFlags_SpanAllColumns))
+        chosen = &s;
+      ImGui::TableNextColumn();
+      ImGui::TextColored(colour(pal::kDim), "%s", s.category.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextWrapped("%s", s.description.c_str());
+    }
+    ImGui::EndTable();
   }
   if (enter && first) chosen = first;
   // A level from a file: a Tiled map or a scene file (files can also be dropped on the window).
   ImGui::Separator();
-  ImGui::TextUnformatted("or a file: a Tiled map (.tmj, .json) or a scene file");
+  ImGui::TextWrapped("or a level file: a Tiled map (.tmj, .json) or a scene file");
   char path[1024];
   std::snprintf(path, sizeof path, "%s", pickerPath_.c_str());
-  ImGui::SetNextItemWidth(-90.0f);
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open file").x - ImGui::GetStyle().FramePadding.x * 4.0f);
   if (ImGui::IsWindowAppearing() && focusPath_) {
     ImGui::SetKeyboardFocusHere();
     focusPath_ = false;
@@ -580,44 +685,169 @@ void Debugger::drawPicker() {
   ImGui::EndPopup();
 }
 
-const MoverSpec& Debugger::sweptMover() const {
-  for (const MoverSpec& m : movers_) {
-    if (m.kind == MoverKind::substep) return m;
-  }
-  return movers_.front();
-}
-
 void Debugger::drawSweep() {
-  const MoverSpec& m = sweptMover();
-  const auto at = std::find_if(movers_.begin(), movers_.end(),
-                               [&](const MoverSpec& x) { return &x == &m; });
-  const std::size_t k = static_cast<std::size_t>(at - movers_.begin());
-  const double current = m.kind == MoverKind::substep ? sessions_[k]->sim().moverSpec().maxStep
-                                                      : params_.get(sim::param::substep);
-  if (const auto length = sweep_.draw(&showSweep_, current)) useSubstepLength(*length);
+  const MoverSpec m = sweptMover();
+  // The length the scene runs with: the parameter, or when it is 0 what that comes to (tile/2).
+  const double param = params_.get(sim::param::substep);
+  double current = param;
+  for (std::size_t k = 0; k < session_->size(); ++k) {
+    const ui::SimSource* s = session_->panel(k).sim();
+    if (s && m.kind == MoverKind::substep && s->simulation().moverSpec().name() == m.name())
+      current = s->simulation().moverSpec().maxStep;
+  }
+  if (current == 0.0) current = params_.get(sim::param::tile) * 0.5;
+  if (const auto length = sweep_.draw(&showSweep_, current, param == 0.0)) useSubstepLength(*length);
 }
 
-void Debugger::useSubstepLength(double length) {
-  const MoverSpec& m = sweptMover();
-  sim::Params p = params_;
-  std::vector<MoverSpec> movers = movers_;
-  // The length applies to every substep mover through the parameter. With none, one mover
-  // becomes substep-discrete (what the sweep ran); a comparison gains it as a new panel, so
-  // its "before" stays.
-  if (m.kind != MoverKind::substep) {
-    if (compare()) {
-      movers.push_back(MoverSpec{.kind = MoverKind::substep});
-    } else {
-      movers.front() = MoverSpec{.kind = MoverKind::substep};
+void Debugger::drawWhatIfDialog() {
+  ImGui::SetNextWindowSize({440, 0}, ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
+  if (!ImGui::Begin("What-if: re-run under another mover (W)", &showWhatIf_,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  const bool scene = isScene();
+  ImGui::TextWrapped("%s", scene ? "The scene run again by another mover, in lockstep beside this "
+                                   "one (its rules react to what the new mover does)."
+                                 : "Every recorded move made again by another mover, beside the "
+                                   "recorded run.");
+  ImGui::SetNextItemWidth(220.0f);
+  if (ImGui::BeginCombo("mover", draftWhatIf_.name().c_str())) {
+    for (const MoverEntry& m : moverTable()) {
+      const std::string name(m.name);
+      if (ImGui::Selectable(name.c_str(), name == draftWhatIf_.name())) draftWhatIf_ = m.spec;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(m.description).c_str());
+    }
+    ImGui::EndCombo();
+  }
+  const bool substep = draftWhatIf_.kind == MoverKind::substep;
+  ImGui::BeginDisabled(!substep || scene);
+  ImGui::SetNextItemWidth(220.0f);
+  const double lo = 0.0, hi = 1e6;
+  ImGui::DragScalar("substep length", ImGuiDataType_Double, &draftSubstep_, 0.25f, &lo, &hi,
+                    draftSubstep_ == 0.0 ? "half the smallest item" : "%.3g");
+  ImGui::EndDisabled();
+  if (!scene) {
+    ImGui::Checkbox("treat a body's updates as moves", &draftUpdates_);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "for games that move bodies themselves (x += v*dt, update, push out):\n"
+          "each update that only changes a position is re-run as a move");
     }
   }
-  try {
-    p.set(sim::param::substep, length);
-    build(*scene_, p, std::move(movers), tick());
-    message_.clear();
-  } catch (const Error& e) {
-    reportError(app::userMessage(e));
+  if (ImGui::Button("Run beside it")) {
+    MoverSpec m = draftWhatIf_;
+    if (substep && !scene) m.maxStep = draftSubstep_;
+    std::vector<MoverSpec> next = movers();
+    if (scene) next.erase(next.begin());  // the first panel is the scene's own
+    next.push_back(m);
+    compareWith(next, draftUpdates_);
+    // Done: the run shows beside this one, its report in the Failures tab; the dialog would
+    // only cover the world.
+    showWhatIf_ = false;
   }
+  ImGui::SameLine();
+  if (ImGui::Button("This run only")) {
+    if (session_->comparing()) compareWith({});
+    showWhatIf_ = false;
+  }
+  if (!scene) {
+    ImGui::PushStyleColor(ImGuiCol_Text, pal::kDim);
+    ImGui::TextWrapped(
+        "Open-loop: the game's recorded goals are replayed as they were; how the game would have "
+        "reacted to a different outcome is not in the file.");
+    ImGui::PopStyleColor();
+    if (const auto& r = checks_.whatIf()) {
+      ImGui::Text("%" PRIu64 " moves re-run; %zu ended elsewhere, %" PRIu64 " tunnelled", r->moves,
+                  r->differences.size(), r->tunnelled);
+    }
+    if (!checks_.error().empty()) ImGui::TextColored(colour(pal::kBad), "%s", checks_.error().c_str());
+  }
+  ImGui::End();
+}
+
+void Debugger::drawLiveDialogs() {
+  // Two small popups: where to listen, and where to save what a live game sent.
+  const auto pathPopup = [&](const char* title, bool& opening, std::string& text, const char* hint,
+                             const char* help, const char* action) -> bool {
+    if (opening) {
+      ImGui::OpenPopup(title);
+      opening = false;
+    }
+    ImGui::SetNextWindowSize({460, 0}, ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
+    if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return false;
+    ImGui::TextWrapped("%s", help);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
+    ImGui::SetNextItemWidth(-90.0f);
+    const bool enter = ImGui::InputTextWithHint("##text", hint, buffer, sizeof buffer,
+                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    text = buffer;
+    ImGui::SameLine();
+    const bool go = (ImGui::Button(action) || enter) && !text.empty();
+    if (go || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return go;
+  };
+  if (pathPopup("Listen for a game", openListen_, listenAddress_, "127.0.0.1:7720",
+                "Where the debugger waits for a game streaming live: [HOST:]PORT (127.0.0.1 "
+                "unless a host is given). Run the game with --live and this address (or TV_LIVE=address, "
+                "where the game reads it: tv::liveFromEnvironment).",
+                "Listen"))
+    tryListen(listenAddress_);
+  if (pathPopup("Save the stream", openSave_, savePath_, "live.tvrec",
+                "The frames kept of the live game, written as a recording (.tvrec) that tv-replay "
+                "validates and the debugger opens.",
+                "Save"))
+    (void)saveStream(savePath_);
+}
+
+std::optional<std::string> OpenRecordingDialog::draw() {
+  if (open_) {
+    ImGui::OpenPopup("Open recording");
+    open_ = false;
+  }
+  ImGui::SetNextWindowSize({520, 0}, ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
+  if (!ImGui::BeginPopupModal("Open recording", nullptr, ImGuiWindowFlags_NoSavedSettings))
+    return std::nullopt;
+  std::optional<std::string> chosen;
+  ImGui::TextWrapped("A .tvrec file written by tv::Recorder (or drop one on the window).");
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  char buffer[1024];
+  std::snprintf(buffer, sizeof buffer, "%s", path_.c_str());
+  ImGui::SetNextItemWidth(-80.0f);
+  const bool enter = ImGui::InputTextWithHint("##path", "path/to/game.tvrec", buffer, sizeof buffer,
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
+  path_ = buffer;
+  ImGui::SameLine();
+  if ((ImGui::Button("Open") || enter) && !path_.empty()) chosen = path_;
+  // The recordings in the folder the path names (or the current one), to click.
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path folder = path_.empty() ? fs::path(".") : fs::path(path_);
+  if (!fs::is_directory(folder, ec)) folder = folder.parent_path();
+  if (folder.empty()) folder = ".";
+  ImGui::TextColored(colour(pal::kDim), "recordings in %s:", folder.string().c_str());
+  ImGui::BeginChild("files", {0, 160}, true);
+  int shown = 0;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end && shown < 200;
+       it.increment(ec)) {
+    if (it->path().extension() != ".tvrec") continue;
+    ++shown;
+    const std::string p = it->path().lexically_normal().string();
+    if (ImGui::Selectable(p.c_str())) chosen = p;
+  }
+  if (shown == 0) ImGui::TextDisabled("(none)");
+  ImGui::EndChild();
+  if (ImGui::Button("Cancel (Esc)") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+    ImGui::CloseCurrentPopup();
+  if (chosen) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+  return chosen;
 }
 
 }  // namespace tv::viewer

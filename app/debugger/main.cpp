@@ -19,8 +19,6 @@
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/palette.hpp"
-#include "tv/ui/recording_still.hpp"
-#include "tv/ui/what_if_view.hpp"
 #include "tv/ui/still.hpp"
 
 namespace tv::viewer {
@@ -30,14 +28,7 @@ constexpr int kUsageExit = 2;
 constexpr int kFailureExit = 1;
 
 void printList() {
-  std::cout << "scenes:\n";
-  for (const sim::SceneDef& s : sim::builtinScenes().all()) {
-    std::printf("  %-16s %-11s %s\n", s.name.c_str(), s.category.c_str(), s.description.c_str());
-  }
-  std::cout << "movers:\n";
-  for (const MoverEntry& m : moverTable()) {
-    std::printf("  %-16s %s\n", std::string(m.name).c_str(), std::string(m.description).c_str());
-  }
+  std::cout << ui::sceneAndMoverList();
 }
 
 // Input that a screenshot must not see: the backend refreshes both every frame, so they are
@@ -74,32 +65,18 @@ void scaleUi(float scale) {
 int screenshot(const ViewerOptions& o) {
   const ui::PictureOptions& p = o.picture;
   // A scene's still, or a recording's (tv-render --open).
-  std::optional<ui::Still> still;
-  std::optional<ui::RecordingStill> recorded;
-  if (o.recording) {
-    recorded.emplace(*o.recording, p);
-  } else {
-    still.emplace(p);
-    still->advanceTo(p.ticks.front());
-  }
+  ui::Still still(p, o.recording);
+  still.advanceTo(p.ticks.front());
   GlWindow window({p.width, p.height, "Tunnelvision", true});
   checkSize(window, p.width, p.height);
   ImGui::GetIO().DisplaySize = {static_cast<float>(p.width), static_cast<float>(p.height)};
   scaleUi(1.0f);
-  if (recorded) {
-    recorded->beginImage();
-  } else {
-    still->beginImage();
-  }
+  still.beginImage();
   for (int f = 0; f < p.frames; ++f) {
     window.beginFrame();
     pinInput();
     ImGui::NewFrame();
-    if (recorded) {
-      recorded->drawFrame(ImGui::GetIO().DisplaySize);
-    } else {
-      still->drawFrame(ImGui::GetIO().DisplaySize);
-    }
+    still.drawFrame(ImGui::GetIO().DisplaySize);
     ImGui::Render();
     window.render(ui::palette::kBackground);
     if (f + 1 == p.frames) {
@@ -121,7 +98,7 @@ int interactive(const ViewerOptions& o) {
   const bool loaded = path && settings.load(*path);
   ViewerOptions opening = o;
   ui::PictureOptions& p = opening.picture;
-  if (!loaded && !shot && !p.sceneGiven && !p.moverGiven && !p.tickGiven) {
+  if (!loaded && !shot && !o.recording && !p.sceneGiven && !p.moverGiven && !p.tickGiven) {
     // The first run opens on the moment that matters: the tick the naive bullet passes the
     // wall, followed, beside the substep patch and the exact sweep.
     p.scene = "bullets-wall";
@@ -132,34 +109,10 @@ int interactive(const ViewerOptions& o) {
     p.body = 2;
     p.view = ui::ViewKind::follow;
   }
+  // Everything opens before the window does, so a bad file or flag fails without a display.
   Debugger debugger(opening, loaded ? &settings : nullptr);
   if (!loaded && !shot) debugger.openHelp();  // the first run opens Help
-
-  // A recording opens before the window does, so a bad file or flag fails without a display.
   debugger.setPinned(shot);
-  if (o.recording) {
-    RecordingDebugger& r = debugger.openRecording(o.recording->path);
-    std::uint64_t frame = o.recording->frame;
-    std::optional<std::uint32_t> call = o.recording->call;
-    const std::optional<MoverSpec>& whatIf = o.recording->whatIf;
-    if (whatIf && o.recording->firstFailure) {
-      // The moment to open at needs the whole re-run: run it once here, before the window.
-      const WhatIfReport report =
-          ui::runWhatIf(o.recording->path, *whatIf, o.recording->updatesAsMoves);
-      if (const auto f = ui::firstFailure(report)) {
-        frame = f->frame;
-        call = f->call;
-      } else {
-        std::cerr << "tv-debugger: under " << ui::moverLabel(*whatIf)
-                  << " no recorded move tunnelled or ended inside a solid; opening at frame "
-                  << frame << "\n";
-      }
-    }
-    r.show(frame, call, o.recording->item);
-    r.setView(o.picture);
-    if (whatIf) r.startWhatIf(*whatIf, o.recording->updatesAsMoves);
-    if (!loaded && !shot) r.openHelp();
-  }
   WindowConfig config{o.picture.width, o.picture.height, "Tunnelvision debugger", shot};
   if (loaded && !o.picture.windowGiven) {
     config.width =

@@ -1,5 +1,7 @@
 #include "options.hpp"
 
+#include "tv/app/flags.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -12,21 +14,43 @@ const char* const kUsage =
     "                   [--mover NAME | --compare A,B[,C...]] [--tick N]\n"
     "                   [--window WxH] [--body I|none] [--view scene|follow|X,Y,W,H]\n"
     "                   [--render-hz R] [--hide a,b] [--show a,b] [--PARAM VALUE ...]\n"
-    "                   [--overlay] [--sweep] [--ui-scale S] [--no-settings]\n"
+    "                   [--overlay] [--sweep] [--first-failure] [--tab T] [--ui-scale S]\n"
+    "                   [--no-settings]\n"
     "                   [--frames K --screenshot FILE.png | --app-screenshot FILE.png]\n"
     "       tv-debugger GAME.tvrec [--frame N] [--call K] [--item LABEL] [--window WxH]\n"
-    "                   [--what-if MOVER [--updates-as-moves] [--first-failure]]\n"
+    "                   [--what-if MOVER [--updates-as-moves]] [--first-failure]\n"
     "                   [--view scene|follow|X,Y,W,H] [--hide a,b] [--show a,b] [...as above]\n"
+    "       tv-debugger --listen [HOST:]PORT [--view ...] [--hide ...]\n"
+    "       tv-debugger --list\n"
     "\n"
-    "The interactive debugger: a window (GLFW, OpenGL 3.3) showing a scene frame by frame, what\n"
-    "each move visited and hit, with time controls, live tuning and mover comparisons. Press F1\n"
-    "in the window for every shortcut.\n"
-    "  The picture's flags are tv-render's (see tv-render --help): the scene, the mover or the\n"
-    "  movers to compare, the tick to open at, the window size, the traced body, the view, the\n"
-    "  render rate, the overlays and any scene parameter. A level from a file: --map FILE (a\n"
-    "  Tiled map; --solid-layer NAME makes a layer solid) or --scene-file FILE; in the window,\n"
-    "  File > Open file... or drop the file on it.\n"
+    "The interactive debugger: a window (GLFW, OpenGL 3.3) showing a scene, a level or a\n"
+    "recorded game frame by frame, what each move visited and hit and, in words, what happened;\n"
+    "movers compared in lockstep, what-if re-runs, live tuning, and a Failures tab that goes\n"
+    "straight to every move that failed. Press F1 in the window for every shortcut.\n"
+    "  --scene NAME     a registered scene (default bullets-wall; --list shows them)\n"
+    "  --map FILE       a Tiled JSON map (.tmj/.json) instead of --scene\n"
+    "  --solid-layer N  with --map: every tile and object of layer N is solid (repeatable)\n"
+    "  --scene-file F   a scene file (JSON; tv-run --export-scene writes one) instead of --scene\n"
+    "  --mover NAME     the mover (default continuous)\n"
+    "  --compare A,B,.. several movers in lockstep, side by side (--overlay: in one view)\n"
+    "  --tick N         the tick to open at (default 1)\n"
+    "  --window WxH     window size in pixels (default 1280x720; --size is the bodies' size)\n"
+    "  --body I         the body whose moves are traced and inspected (default 0; none)\n"
+    "  --view V         scene: frame everything; follow: the traced move; X,Y,W,H: this rect\n"
+    "  --render-hz R    draw rate: bodies drawn where a game rendering at R Hz would draw them;\n"
+    "                   0 (default) draws the physics state of each tick\n"
+    "  --hide a,b       overlays to turn off; --show a,b to turn on (names as in the panel:\n"
+    "                   solids bodies grid occupied visited candidates sweep hull substeps hits\n"
+    "                   responses history positions pixel-grid labels, or all)\n"
+    "  --PARAM VALUE    any parameter of the scene (--list shows each scene's with its default):\n"
+    "                   --speed --size --tile --dt --substep --offset --count --seed --cell\n"
+    "                   --angle ... (as in tv-run, tv-render and the panel)\n"
     "  --overlay        compared movers in one view (default: side by side)\n"
+    "  --first-failure  open at the run's first failure: its frame, the failing item traced,\n"
+    "                   centred and zoomed (what the timeline's \"go\" does); for a what-if\n"
+    "                   run, the first re-run move that tunnelled or ended inside a solid\n"
+    "  --tab T          the column's tab shown first: inspector, calls, items, failures,\n"
+    "                   counters\n"
     "  --sweep          open the substep sweep plot\n"
     "  --ui-scale S     text and widget scale, 0.5..4 (default: the monitor's content scale)\n"
     "  --no-settings    neither read nor write the settings file\n"
@@ -34,16 +58,26 @@ const char* const kUsage =
     "                   of the scene at the tick, write it to F and exit; tv-render given the\n"
     "                   same flags writes the same pixels\n"
     "  --app-screenshot F  the same, of the whole debugger window\n"
+    "  --list           scenes (with their parameters) and movers, one line each\n"
     "A recording (GAME.tvrec, written by tv::Recorder; or File > Open recording..., or drop the\n"
     "file on the window) opens at frame N (default 0), with call K of it selected and the item\n"
     "labelled LABEL traced; --screenshot then writes tv-render --open's picture of it.\n"
-    "  --what-if MOVER  re-run the recording with MOVER beside the recorded run (What-if menu)\n"
+    "  --what-if MOVER  re-run the recording with MOVER beside the recorded run (Movers menu)\n"
     "  --updates-as-moves  in that run, an update that only moves an item is made a move\n"
-    "  --first-failure  open at the first re-run move that tunnelled or ended inside a solid\n"
+    "A game running now (its recorder streaming: the sample with --live HOST:PORT, a game that\n"
+    "calls tv::liveFromEnvironment() with TV_LIVE=HOST:PORT; or File > Listen for a game...):\n"
+    "  --listen ADDR    wait for games at [HOST:]PORT (host 127.0.0.1 unless given); frames\n"
+    "                   show as they arrive and the view follows the newest until you pause or\n"
+    "                   scrub; Pause and Step hold the game at its next frame (when it allows\n"
+    "                   it); File > Save the stream writes what is kept as a .tvrec\n"
+    "  --keep-frames N  keep the newest N frames of a live game (default: no limit by count)\n"
+    "  --keep-mb M      keep at most M MB of them (default 256); the oldest are dropped, and\n"
+    "                   the window says so\n"
     "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
     "values) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
-    "Exit status: 0 done, 1 failed (no display, GL), 2 bad command line.\n";
+    "Exit status: 0 done, 1 failed (no display, GL, a file that does not open), 2 bad command\n"
+    "line.\n";
 
 namespace {
 
@@ -87,6 +121,32 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
       o.sweep = true;
     } else if (arg == "--overlay") {
       o.overlay = true;
+    } else if (arg == "--listen") {
+      o.listen = value(i, arg);
+    } else if (arg == "--keep-frames") {
+      o.keepFrames = app::parseWhole<ui::UsageError>("keep-frames", value(i, arg));
+    } else if (arg == "--keep-mb") {
+      o.keepMegabytes = app::parseWhole<ui::UsageError>("keep-mb", value(i, arg));
+      if (o.keepMegabytes < 1 || o.keepMegabytes > (std::uint64_t{1} << 20)) {
+        throw ui::UsageError{"--keep-mb: expected 1..1048576 (MB), but got " +
+                             std::to_string(o.keepMegabytes)};
+      }
+    } else if (arg == "--tab") {
+      const std::string t = value(i, arg);
+      if (t == "inspector") {
+        o.tab = ui::Tab::inspector;
+      } else if (t == "calls") {
+        o.tab = ui::Tab::calls;
+      } else if (t == "items") {
+        o.tab = ui::Tab::items;
+      } else if (t == "failures") {
+        o.tab = ui::Tab::failures;
+      } else if (t == "counters") {
+        o.tab = ui::Tab::counters;
+      } else {
+        throw ui::UsageError{"--tab: expected inspector, calls, items, failures or counters, but "
+                             "got '" + t + "'"};
+      }
     } else if (arg == "--ui-scale") {
       o.uiScale = parseScale(value(i, arg));
     } else if (arg == "--out" || arg.substr(0, 6) == "--out=") {
@@ -100,6 +160,18 @@ ViewerOptions parseViewerOptions(int argc, char** argv) {
     throw ui::UsageError{"--ticks: tv-debugger opens at one tick; give --tick N"};
   }
   if (o.recording) ui::rejectSceneFlags(o.picture);
+  ui::checkFirstFailure(o.picture, o.recording);
+  if (!o.listen && (o.keepFrames != 0 || o.keepMegabytes != 256)) {
+    throw ui::UsageError{"--keep-frames and --keep-mb go with --listen"};
+  }
+  if (o.listen && o.recording) {
+    throw ui::UsageError{"--listen: a live game or a recording, not both (File > Open recording... "
+                         "opens one later)"};
+  }
+  if (o.listen && (o.screenshot || o.appScreenshot)) {
+    throw ui::UsageError{"--listen: a live game cannot be a screenshot (tv-replay --listen saves "
+                         "it; open the file)"};
+  }
   if (o.screenshot && o.appScreenshot) {
     throw ui::UsageError{"--screenshot: give either --screenshot or --app-screenshot"};
   }

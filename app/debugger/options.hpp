@@ -3,11 +3,12 @@
 // movers, tick, size, body, view, render rate, overlays and scene parameters), plus the
 // debugger's own.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
 #include "tv/ui/picture_options.hpp"
-#include "tv/ui/recording_still.hpp"
+#include "tv/ui/still.hpp"
 
 namespace tv::viewer {
 
@@ -28,6 +29,13 @@ struct ViewerOptions {
   bool sweep = false;
   /// Draw compared movers in one view instead of side by side.
   bool overlay = false;
+  /// The column's tab to show first.
+  std::optional<ui::Tab> tab;
+  /// --listen [HOST:]PORT: wait for games streaming live (their recorder's --live).
+  std::optional<std::string> listen;
+  /// --keep-frames N / --keep-mb M: the frames of a live game kept (0 frames: no limit by count).
+  std::uint64_t keepFrames = 0;
+  std::uint64_t keepMegabytes = 256;
 };
 
 /// Throws ui::UsageError naming the flag.

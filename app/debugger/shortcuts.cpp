@@ -8,19 +8,28 @@ namespace tv::viewer {
 namespace {
 
 constexpr Shortcut kShortcuts[] = {
-    {Command::pause, "P", "pause / play (Space too)"},
-    {Command::step, "O", "single step: one tick, paused"},
-    {Command::stepBack, ",", "step back one tick through history"},
-    {Command::stepForward, ".", "step forward one tick through history"},
-    {Command::restart, "R", "restart from tick 0"},
+    {Command::pause, "Space", "play / pause (P too)"},
+    {Command::step, "O", "single step: one tick or frame, paused"},
+    {Command::stepBack, ",", "step back one tick or frame through history"},
+    {Command::stepForward, ".", "step forward one tick or frame"},
+    {Command::nextCall, "Down", "next call (a body's move, a recorded call), across frames"},
+    {Command::previousCall, "Up", "previous call"},
+    {Command::frameEnd, "Enter", "the frame's end: no call selected"},
+    {Command::restart, "R", "a scene from tick 0; a recording from its first frame"},
     {Command::slower, "-", "slower (down to 0.25x)"},
     {Command::faster, "=", "faster (up to 4x)"},
-    {Command::frameAll, "Home", "frame everything (the scene's camera)"},
-    {Command::follow, "F", "follow the traced body's last move"},
-    {Command::compare, "C", "compare discrete, substep and continuous (again: one mover)"},
-    {Command::overlay, "V", "compared movers side by side / overlaid"},
-    {Command::sweep, "T", "substep sweep: tunnelled, error, ms per tick against length"},
-    {Command::openScene, "Ctrl+O", "open a scene: type to filter, Enter opens"},
+    {Command::frameAll, "Home", "frame everything"},
+    {Command::follow, "F", "follow the traced move"},
+    {Command::compare, "C", "compare discrete, substep and continuous (a recording: what-if "
+                            "discrete); again: one panel"},
+    {Command::overlay, "V", "compared panels side by side / overlaid"},
+    {Command::whatIf, "W", "what-if: re-run under another mover, beside this run"},
+    {Command::sweep, "T", "substep sweep (scenes): tunnelled, error, ms per tick against length"},
+    {Command::items, "I", "the Items tab, its search ready to type in"},
+    {Command::failures, "X", "the Failures tab: every move that failed"},
+    {Command::firstFailure, "G", "go to the first failure: traced, centred, zoomed"},
+    {Command::openScene, "Ctrl+O", "open a scene or a level file: type to filter, Enter opens"},
+    {Command::openRecording, "Ctrl+R", "open a recording (or drop a .tvrec on the window)"},
     {Command::previousScene, "[", "previous scene"},
     {Command::nextScene, "]", "next scene"},
     {Command::help, "F1", "this window (Esc closes the topmost window)"},
@@ -34,8 +43,9 @@ struct MouseHelp {
 constexpr MouseHelp kMouse[] = {
     {"wheel", "zoom about the cursor"},
     {"right drag", "pan"},
-    {"left click", "select (trace) the body under the cursor; it stays selected while scrubbing"},
-    {"timeline", "click or drag to scrub; red mark: first failure, orange: first difference"},
+    {"left click", "trace the item under the cursor; it stays traced while scrubbing"},
+    {"timeline", "click or drag to scrub; red: first failure (ticks: every failure), orange: "
+                 "first difference, violet: a what-if's goals stop making sense"},
 };
 
 }  // namespace
@@ -51,24 +61,26 @@ const char* keysOf(Command c) {
   return "";
 }
 
-void drawHelp(bool* open, ImVec2 pos, ImVec2 size) {
-  // Over the column of controls, beside the world: the picture it explains stays in view.
-  ImGui::SetNextWindowPos(pos, ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(size, ImGuiCond_Appearing);
+void drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place) {
+  ImGui::SetNextWindowPos(pos, place ? ImGuiCond_Always : ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(size, place ? ImGuiCond_Always : ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(1.0f);  // over the panel: its labels must not show through
   if (!ImGui::Begin("Help (F1)", open, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
   ImGui::TextWrapped(
-      "Tunnelvision shows, tick by tick, what each move did: the cells it visited (yellow), the "
-      "items it tested (magenta), its sweep (white), substeps (violet), hits (red) and what the "
-      "response did (green). Pause, step to the bad tick, change a number in the panel on the "
-      "right, and the scene re-runs from tick 0 to the same tick.");
+      "Tunnelvision shows, frame by frame, what each move did: the cells it visited (yellow), "
+      "the items it tested (magenta), its sweep (white), substeps (violet), hits (red) and what "
+      "the response did (green), and says in words what happened. The Failures tab lists every "
+      "move that failed: click one to go there. A scene's frames are ticks, and a change in the "
+      "panel on the right re-runs it to the same tick; a recording's frames are the game's, "
+      "each a list of calls.");
   ImGui::Spacing();
   const ImVec4 key = ImGui::ColorConvertU32ToFloat4(ui::palette::kPixel);
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
-    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 80.0f);
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed,
+                            ImGui::CalcTextSize("right drag").x + 8.0f);
     ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
     for (const Shortcut& s : kShortcuts) {
       ImGui::TableNextColumn();

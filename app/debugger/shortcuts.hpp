@@ -1,6 +1,7 @@
 #pragma once
-// Every shortcut, in one table: the Help window lists it and the menus label their items from
-// it, so what the Help says and what the menus show never disagree.
+// Every shortcut, in one table: the Help window lists it and the menus and buttons label
+// themselves from it, so what the Help says and what the menus show never disagree — for every
+// source (a scene, a level, a recording, a live game).
 
 #include <span>
 
@@ -13,6 +14,9 @@ enum class Command {
   step,
   stepBack,
   stepForward,
+  nextCall,
+  previousCall,
+  frameEnd,
   restart,
   slower,
   faster,
@@ -20,8 +24,13 @@ enum class Command {
   follow,
   compare,
   overlay,
+  whatIf,
   sweep,
+  items,
+  failures,
+  firstFailure,
   openScene,
+  openRecording,
   previousScene,
   nextScene,
   help,
@@ -30,7 +39,7 @@ enum class Command {
 
 struct Shortcut {
   Command command;
-  const char* keys;  ///< as shown in menus and Help
+  const char* keys;  ///< as shown in menus, buttons and Help
   const char* what;
 };
 
@@ -38,7 +47,8 @@ struct Shortcut {
 /// The keys of `c`, e.g. "Ctrl+O".
 [[nodiscard]] const char* keysOf(Command c);
 
-/// The Help window: every shortcut and the mouse; first placed at `pos`, `size`.
-void drawHelp(bool* open, ImVec2 pos, ImVec2 size);
+/// The Help window: every shortcut and the mouse; placed at `pos`, `size` while `place` (its
+/// first frames, while the layout it goes over settles), then where the person moves it.
+void drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place);
 
 }  // namespace tv::viewer

@@ -95,7 +95,7 @@ bool SubstepSweep::advance() {
   return true;
 }
 
-std::optional<double> SubstepSweep::draw(bool* open, double currentLength) {
+std::optional<double> SubstepSweep::draw(bool* open, double currentLength, bool byDefault) {
   std::optional<double> picked;
   ImGui::SetNextWindowSize({430, 520}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos({120, 120}, ImGuiCond_FirstUseEver);
@@ -176,6 +176,10 @@ std::optional<double> SubstepSweep::draw(bool* open, double currentLength) {
   plot("time", "ms per tick", ms, "%.3f");
   ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(ui::palette::kDim),
                      "x: max substep length (px, log); orange: the length now");
+  // The parameter reads 0 when the length is the default: say what that comes to, as the
+  // panel's field does.
+  ImGui::TextWrapped("the length now: %g px%s", currentLength,
+                     byDefault ? " (the substep parameter is 0: tile/2)" : "");
   if (ImGui::BeginTable(
           "sweep", 4,
           ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollY)) {
@@ -188,8 +192,8 @@ std::optional<double> SubstepSweep::draw(bool* open, double currentLength) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       char label[32];
-      std::snprintf(label, sizeof label, "%g%s", p.length,
-                    std::abs(p.length - currentLength) < 1e-9 ? "  (now)" : "");
+      const bool now = std::abs(p.length - currentLength) < 1e-9;
+      std::snprintf(label, sizeof label, "%g%s", p.length, now ? "  (now)" : "");
       if (ImGui::Selectable(label, std::abs(p.length - currentLength) < 1e-9,
                             ImGuiSelectableFlags_SpanAllColumns)) {
         picked = p.length;

@@ -40,8 +40,9 @@ class SubstepSweep {
   [[nodiscard]] std::uint64_t ticks() const { return ticks_; }
   [[nodiscard]] const std::string& error() const { return error_; }
 
-  /// The window; returns a length the person picked, to apply.
-  std::optional<double> draw(bool* open, double currentLength);
+  /// The window; returns a length the person picked, to apply. `currentLength` is the length
+  /// the scene runs with; `byDefault`: it is the default (the parameter reads 0, tile/2).
+  std::optional<double> draw(bool* open, double currentLength, bool byDefault);
 
  private:
   const sim::SceneDef* scene_ = nullptr;

@@ -16,13 +16,15 @@ std::optional<std::uint64_t> timelineBar(const char* id, std::uint64_t current, 
   const ImVec2 p = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, {std::max(width, 20.0f), h});
   const float w = std::max(width, 20.0f);
-  const double span = static_cast<double>(std::max<std::uint64_t>(last, 1));
+  const std::uint64_t first = std::min(marks.first, last);
+  const double span = static_cast<double>(std::max<std::uint64_t>(last - first, 1));
   const auto xOf = [&](std::uint64_t t) {
-    return p.x + 4.0f + static_cast<float>(static_cast<double>(t) / span) * (w - 8.0f);
+    const double at = static_cast<double>(std::max(t, first) - first);
+    return p.x + 4.0f + static_cast<float>(at / span) * (w - 8.0f);
   };
   const auto tickAt = [&](float x) {
     const double f = std::clamp(static_cast<double>((x - p.x - 4.0f) / (w - 8.0f)), 0.0, 1.0);
-    return static_cast<std::uint64_t>(std::llround(f * span));
+    return first + static_cast<std::uint64_t>(std::llround(f * span));
   };
 
   ImDrawList& dl = *ImGui::GetWindowDrawList();
@@ -33,16 +35,23 @@ std::optional<std::uint64_t> timelineBar(const char* id, std::uint64_t current, 
   // Decade ticks so a tick number can be found by eye.
   const double step = std::pow(10.0, std::floor(std::log10(std::max(span / 8.0, 1.0))));
   for (double t = 0.0; t <= span; t += step) {
-    const float x = xOf(static_cast<std::uint64_t>(t));
+    const float x = xOf(first + static_cast<std::uint64_t>(t));
     dl.AddLine({x, q.y - 6.0f}, {x, q.y}, pal::kDim);
   }
+  // Every frame with a failure: a short red tick, so where things go wrong is seen at a glance.
+  for (const std::uint64_t t : marks.failures) {
+    if (t < first || t > last) continue;
+    const float x = xOf(t);
+    dl.AddLine({x, p.y + 1.0f}, {x, p.y + h * 0.45f}, (pal::kBad & 0x00FFFFFFu) | 0xB0000000u);
+  }
   const auto mark = [&](std::optional<std::uint64_t> t, ImU32 colour) {
-    if (!t || *t > last) return;
+    if (!t || *t > last || *t < first) return;
     const float x = xOf(*t);
     dl.AddLine({x, p.y}, {x, q.y}, colour, 2.0f);
     dl.AddTriangleFilled({x - 5.0f, p.y}, {x + 5.0f, p.y}, {x, p.y + 6.0f}, colour);
   };
   mark(marks.difference, pal::kRender);
+  mark(marks.implausible, IM_COL32(200, 120, 255, 255));
   mark(marks.failure, pal::kBad);
   const float cx = xOf(std::min(current, last));
   dl.AddRectFilled({cx - 2.0f, p.y}, {cx + 2.0f, q.y}, pal::kSelected);

@@ -22,7 +22,6 @@
 #include "tv/mover.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/palette.hpp"
-#include "tv/ui/recording_still.hpp"
 #include "tv/ui/still.hpp"
 
 namespace tv::headless {
@@ -34,25 +33,7 @@ constexpr int kFailureExit = 1;
 // [SECTION] --list -----------------------------------------------------------------------------
 
 void printList() {
-  std::cout << "scenes:\n";
-  for (const sim::SceneDef& s : sim::builtinScenes().all()) {
-    std::printf("  %-16s %s\n", s.name.c_str(), s.description.c_str());
-    // Its parameters, as flags with their defaults.
-    std::string line;
-    const sim::Params defaults = s.defaults();
-    for (const sim::ParamSpec& p : defaults.specs()) {
-      if (!line.empty()) line += ' ';
-      line += "--";
-      line += p.name;
-      line += ' ';
-      line += formatNumber(p.value);
-    }
-    std::printf("  %-16s %s\n", "", line.c_str());
-  }
-  std::cout << "movers:\n";
-  for (const MoverEntry& m : moverTable()) {
-    std::printf("  %-16s %s\n", std::string(m.name).c_str(), std::string(m.description).c_str());
-  }
+  std::cout << ui::sceneAndMoverList();
 }
 
 // [SECTION] file names ----------------------------------------------------------------------
@@ -80,9 +61,7 @@ struct FrameTimes {
   double firstMs = 0.0;
 };
 
-// A scene's still or a recording's: both draw one picture the same way.
-template <class Still>
-FrameTimes renderImage(const Options& o, Still& still) {
+FrameTimes renderImage(const Options& o, ui::Still& still) {
   // A fresh context per image: window sizes, table widths and tree states never leak from one
   // picture into the next.
   IMGUI_CHECKVERSION();
@@ -141,13 +120,13 @@ void report(const Options& o, const std::string& path, const FrameTimes& t, doub
 
 // --open FILE: a recorded game at a frame (and call), as tv-debugger shows it.
 int renderRecording(const ui::RecordingFlags& r, const Options& o) {
-  ui::RecordingStill still(r, o);
+  ui::Still still(o, r);
   OffscreenGl gl(o.width, o.height);
   const FrameTimes t = renderImage(o, still);
   const auto e0 = std::chrono::steady_clock::now();
   std::string path = o.out ? *o.out : std::string();
   if (path.empty()) {
-    const std::string name = still.session().name();
+    const std::string name = still.session().primary().name();
     path = name.substr(0, name.rfind('.')) + "_{tick}.png";
   }
   // The frame shown: --frame, or with --first-failure the frame it found.
@@ -180,7 +159,10 @@ int run(int argc, char** argv) {
   }
   ui::Still still(o);
   OffscreenGl gl(o.width, o.height);
-  for (const std::uint64_t tick : o.ticks) {
+  // --first-failure: one image, at the tick the failure is in.
+  const std::vector<std::uint64_t> ticks =
+      still.failureShown() ? std::vector<std::uint64_t>{still.session().frame()} : o.ticks;
+  for (const std::uint64_t tick : ticks) {
     still.advanceTo(tick);
     const FrameTimes t = renderImage(o, still);
     const auto e0 = std::chrono::steady_clock::now();

@@ -194,6 +194,66 @@ TEST(Tiled, ClassedObjectsBecomeBodiesWithTheirProperties) {
   }
 }
 
+std::string named(const std::string& name, const std::string& cls, const std::string& geometry,
+                  const std::string& props) {
+  return R"({"id": 9, "name": ")" + name + R"(", "type": ")" + cls + "\", " + geometry +
+         R"(, "properties": [)" + props + "]}";
+}
+
+// The tools call things what the map calls them: an object's name is its body's or solid's
+// name ("Block 12"); a spawner's bullets are its name and their number.
+TEST(Tiled, ObjectNamesAreWhatTheToolsCallTheirBodiesAndSolids) {
+  const std::string layer =
+      R"({"type": "objectgroup", "name": "actors", "objects": [)" +
+      named("Hero", "player", R"("x": 40, "y": 100, "point": true)", "") + "," +
+      named("Block 12", "", R"("x": 100, "y": 34, "width": 16, "height": 16)",
+            prop("collidable", "bool", "true")) +
+      "," +
+      named("turret", "spawner", R"("x": 200, "y": 0, "width": 4, "height": 30)",
+            prop("count", "int", "2")) +
+      "]}";
+  const Level lv = parseTiledMap(map(20, 10, layer), "m.tmj");
+  ASSERT_EQ(lv.bodies.size(), 3u);
+  EXPECT_EQ(lv.bodies[0].name, "Hero");
+  EXPECT_EQ(lv.bodies[1].name, "turret 0");
+  EXPECT_EQ(lv.bodies[2].name, "turret 1");
+  ASSERT_EQ(lv.solids.size(), 1u);
+  ASSERT_EQ(lv.solidNames.size(), 1u);
+  EXPECT_EQ(lv.solidNames[0], "Block 12");
+  // And they reach the simulation the tools run.
+  const sim::SceneDef scene = makeScene(lv);
+  const sim::Simulation sim(scene, scene.defaults(), MoverSpec{});
+  EXPECT_EQ(sim.bodyName(0), "Hero");
+  EXPECT_EQ(sim.solidName(0), "Block 12");
+  EXPECT_EQ(sim.solidOf(sim.world().queryRect({100, 34, 16, 16}).front()), std::size_t{0});
+}
+
+// An object of a class the loader makes nothing of is not dropped in silence: a note names the
+// class, how many, and the first one.
+TEST(Tiled, AnObjectOfAnUnknownClassIsNamedInANote) {
+  const std::string layer =
+      R"({"type": "objectgroup", "name": "actors", "objects": [)" +
+      named("gold", "coin", R"("x": 10, "y": 20, "width": 4, "height": 4)", "") + "," +
+      named("silver", "coin", R"("x": 30, "y": 20, "width": 4, "height": 4)", "") + "]}";
+  const Level lv = parseTiledMap(map(20, 10, layer), "m.tmj");
+  EXPECT_TRUE(lv.bodies.empty());
+  bool said = false;
+  for (const std::string& n : lv.notes) {
+    if (n.find("2 objects of class 'coin' ignored") != std::string::npos &&
+        n.find("'gold' at (10, 20)") != std::string::npos)
+      said = true;
+  }
+  EXPECT_TRUE(said) << (lv.notes.empty() ? std::string("no notes") : lv.notes.front());
+}
+
+TEST(Tiled, KnownClassesLeaveNoSuchNote) {  // the negative control
+  const std::string layer =
+      R"({"type": "objectgroup", "name": "actors", "objects": [)" +
+      named("Hero", "player", R"("x": 40, "y": 100, "point": true)", "") + "]}";
+  const Level lv = parseTiledMap(map(20, 10, layer), "m.tmj");
+  for (const std::string& n : lv.notes) EXPECT_EQ(n.find("ignored"), std::string::npos) << n;
+}
+
 // A level to walk on and shoot at: a floor of 20 tiles with a wall at each end, a walker, and a
 // spawner firing 2×2 bullets at the right wall at 7680 px/s (two tiles a tick).
 //   |#                    #|

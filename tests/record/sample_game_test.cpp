@@ -96,6 +96,40 @@ TEST(WhatIf, WithoutUpdatesAsMovesTheNaiveGameHasNothingToReRun) {
   EXPECT_EQ(w.tunnelled, 0u);
 }
 
+// The recorded run judged alone, with no mover to re-run with: the same counts and moves as a
+// what-if run's first pass, and nothing of a re-run.
+TEST(CheckRecorded, FindsTheNaiveGamesOwnTunnelsAsAWhatIfsFirstPassDoes) {
+  const std::vector<std::uint8_t> file = recordGame(true);
+  tv::ReplayOptions updates;
+  updates.updatesAsMoves = true;
+  tv::Replay alone = tv::Replay::fromBytes(file, updates);
+  const tv::WhatIfReport own = alone.checkRecorded();
+  const tv::WhatIfReport w =
+      tv::Replay::fromBytes(file, withMover("continuous", true)).whatIf();
+  EXPECT_GT(own.recordedTunnelled, 20u);
+  EXPECT_EQ(own.recordedTunnelled, w.recordedTunnelled);
+  EXPECT_EQ(own.recordedOverlapping, w.recordedOverlapping);
+  ASSERT_EQ(own.recordedFailures.size(), w.recordedFailures.size());
+  for (std::size_t i = 0; i < own.recordedFailures.size(); ++i) {
+    EXPECT_EQ(own.recordedFailures[i].frame, w.recordedFailures[i].frame);
+    EXPECT_EQ(own.recordedFailures[i].item, w.recordedFailures[i].item);
+  }
+  EXPECT_EQ(own.moves, 0u);  // nothing re-run
+  EXPECT_TRUE(own.differences.empty());
+  // The replay is itself again afterwards: it still validates, and still has no mover.
+  EXPECT_FALSE(alone.validate().has_value());
+  EXPECT_THROW((void)alone.whatIf(), tv::Error);
+}
+
+TEST(CheckRecorded, TheContinuousGameHasNoTunnelOfItsOwn) {  // the control
+  tv::Replay r = tv::Replay::fromBytes(recordGame(false), withMover("discrete"));
+  const tv::WhatIfReport own = r.checkRecorded();
+  EXPECT_EQ(own.recordedTunnelled, 0u);
+  EXPECT_TRUE(own.recordedFailures.empty());
+  // With a mover set, checking the recorded run leaves it set for the what-if after.
+  EXPECT_GT(r.whatIf().tunnelled, 20u);
+}
+
 TEST(WhatIf, NeedsAMover) {
   tv::Replay r = tv::Replay::fromBytes(recordGame(false));
   EXPECT_THROW((void)r.whatIf(), tv::Error);

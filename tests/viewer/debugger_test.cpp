@@ -1,77 +1,10 @@
-// The debugger as a new user meets it, driven frame by frame through ImGui without a window:
-// the mouse and keys are set on ImGuiIO, frames are built (never rendered) and the debugger's
-// state and draw lists are read back. Each test is one defect a new user hit.
-#include <gtest/gtest.h>
-
-#include <GLFW/glfw3.h>
-
-#include <cfloat>
+// The debugger as a new user meets it (see driver.hpp). Each test is one defect a new user hit.
 #include <chrono>
-#include <memory>
-#include <cmath>
-#include <cstdio>
-#include <string>
-#include <vector>
 
-#include "debugger.hpp"
-#include "imgui.h"
-#include "options.hpp"
-#include "tv/ui/palette.hpp"
+#include "driver.hpp"
 
 namespace tv::viewer {
 namespace {
-
-class DebuggerDriver : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DeltaTime = 1.0f / 60.0f;
-    ui::applyStyle(ImGui::GetStyle());  // the debugger's compact look, as the window has it
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    resize(1280, 720);
-  }
-  void TearDown() override {
-    debugger_.reset();
-    ImGui::DestroyContext();
-  }
-
-  static void resize(float w, float h) { ImGui::GetIO().DisplaySize = {w, h}; }
-
-  void open(const std::vector<std::string>& given) {
-    std::vector<std::string> args = {"tv-debugger"};
-    args.insert(args.end(), given.begin(), given.end());
-    args.push_back("--no-settings");
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    const ViewerOptions o = parseViewerOptions(static_cast<int>(argv.size()), argv.data());
-    debugger_ = std::make_unique<Debugger>(o, nullptr);
-    debugger_->setPinned(true);  // the look-ahead runs to its end: marks do not depend on speed
-    frames(3);
-  }
-
-  // One frame with the mouse at `mouse` (off screen by default) and `right` held.
-  void frame(ImVec2 mouse = {-FLT_MAX, -FLT_MAX}, bool right = false,
-             std::vector<KeyPress> keys = {}) {
-    ImGuiIO& io = ImGui::GetIO();
-    io.MousePos = mouse;
-    io.MouseDown[1] = right;
-    ImGui::NewFrame();
-    debugger_->frame(1.0 / 60.0, keys);
-    ImGui::Render();
-  }
-  void frames(int n) {
-    for (int i = 0; i < n; ++i) frame();
-  }
-
-  Debugger& dbg() { return *debugger_; }
-
- private:
-  std::unique_ptr<Debugger> debugger_;
-};
 
 // -- 1. compare: pan keeps the zoom -----------------------------------------------------------
 //
@@ -137,10 +70,10 @@ TEST_F(DebuggerDriver, TheTimelineReportsTheFirstFailureOfAnyComparedMover) {
   // With 32 px pieces substep-discrete tunnels like discrete; continuous does not.
   open({"--scene", "bullets-wall", "--compare", "discrete,substep-discrete,continuous",
         "--substep", "32"});
-  ASSERT_TRUE(dbg().divergence().done());
-  ASSERT_TRUE(dbg().divergence().firstFailure().has_value());
-  EXPECT_EQ(*dbg().divergence().firstFailure(), 1u);
-  const std::string& what = dbg().divergence().failureText();
+  ASSERT_TRUE(dbg().checks().done());
+  ASSERT_TRUE(dbg().checks().firstFailure().has_value());
+  EXPECT_EQ(*dbg().checks().firstFailure(), 1u);
+  const std::string& what = dbg().checks().failureText();
   EXPECT_NE(what.find("discrete tunnelled"), std::string::npos) << what;
   EXPECT_NE(what.find("substep-discrete tunnelled"), std::string::npos) << what;
   EXPECT_EQ(what.find("continuous"), std::string::npos) << what;
@@ -148,8 +81,8 @@ TEST_F(DebuggerDriver, TheTimelineReportsTheFirstFailureOfAnyComparedMover) {
 
 TEST_F(DebuggerDriver, MoversThatAllHoldReportNoFailure) {  // the negative control
   open({"--scene", "bullets-wall", "--compare", "sweep,continuous"});
-  ASSERT_TRUE(dbg().divergence().done());
-  EXPECT_FALSE(dbg().divergence().firstFailure().has_value()) << dbg().divergence().failureText();
+  ASSERT_TRUE(dbg().checks().done());
+  EXPECT_FALSE(dbg().checks().firstFailure().has_value()) << dbg().checks().failureText();
 }
 
 // -- 4. a sweep row keeps the comparison; duplicates are refused --------------------------------
@@ -177,52 +110,6 @@ TEST_F(DebuggerDriver, AMoverNamedTwiceIsRefused) {
                ui::UsageError);
 }
 
-// -- 5. no text outside its panel ------------------------------------------------------------
-// A glyph that straddles the left or right side of its draw command's clip rect is text cut
-// off at a panel's edge ("erlapping touch"). Every glyph of every window must lie inside its
-// clip rect across; the top and bottom are where a window scrolls, which is not a defect.
-int cutGlyphs(std::string* where) {
-  const ImDrawData* dd = ImGui::GetDrawData();
-  // A glyph is a quad drawn as two triangles; its first triangle runs from the vertex with the
-  // glyph's (U0, V0) to the one with its (U1, V1). Lines and shapes use other UVs. Triangles are
-  // walked one by one: other primitives in the same command need not come in sixes.
-  const ImVector<ImFontGlyph>& glyphs = ImGui::GetIO().Fonts->Fonts[0]->Glyphs;
-  const auto isGlyph = [&](ImVec2 uv0, ImVec2 uv2) {
-    for (const ImFontGlyph& g : glyphs) {
-      if (g.U0 == uv0.x && g.V0 == uv0.y && g.U1 == uv2.x && g.V1 == uv2.y && g.X1 > g.X0)
-        return true;
-    }
-    return false;
-  };
-  int cut = 0;
-  for (int l = 0; l < dd->CmdListsCount; ++l) {
-    const ImDrawList* dl = dd->CmdLists[l];
-    for (const ImDrawCmd& cmd : dl->CmdBuffer) {
-      if (cmd.UserCallback) continue;
-      const ImVec4 clip = cmd.ClipRect;
-      for (unsigned i = 0; i + 3 <= cmd.ElemCount; i += 3) {
-        const ImDrawIdx* idx = dl->IdxBuffer.Data + cmd.IdxOffset + i;
-        const ImDrawVert& a = dl->VtxBuffer[static_cast<int>(cmd.VtxOffset + idx[0])];
-        const ImDrawVert& c = dl->VtxBuffer[static_cast<int>(cmd.VtxOffset + idx[2])];
-        if (!isGlyph(a.uv, c.uv)) continue;
-        const float x0 = std::min(a.pos.x, c.pos.x), x1 = std::max(a.pos.x, c.pos.x);
-        const float y0 = std::min(a.pos.y, c.pos.y), y1 = std::max(a.pos.y, c.pos.y);
-        const bool inside = x0 >= clip.x - 0.5f && x1 <= clip.z + 0.5f;
-        const bool visible = x1 > clip.x && x0 < clip.z && y1 > clip.y && y0 < clip.w;
-        if (visible && !inside) {
-          ++cut;
-          char text[160];
-          std::snprintf(text, sizeof text, "%s at (%.0f, %.0f); ",
-                        dl->_OwnerName ? dl->_OwnerName : "?", static_cast<double>(x0),
-                        static_cast<double>(y0));
-          if (where->size() < 600) where->append(text);
-        }
-      }
-    }
-  }
-  return cut;
-}
-
 struct Layout {
   float w, h;
   std::vector<std::string> args;
@@ -239,6 +126,13 @@ TEST_F(DebuggerDriver, NoTextIsCutAtAPanelsEdge) {
       {1280, 720, {"--scene", "seam-walk", "--tick", "9", "--body", "0", "--view", "follow"}},
       {1024, 640, {"--scene", "bounce-gap", "--mover", "discrete", "--tick", "1", "--body", "0",
                    "--view", "follow"}},
+      {1280, 720, {sampleRecording(), "--view", "follow", "--what-if", "discrete",
+                   "--first-failure"}},
+      {1024, 640, {sampleRecording(), "--frame", "62", "--call", "2", "--what-if", "discrete"}},
+      {1024, 640, {sampleRecording(), "--what-if", "discrete", "--tab", "failures"}},
+      {1024, 640, {"--scene", "bullets-wall", "--tab", "failures"}},
+      // Three panels: "pushed back out of floor tile 2" is wider than each.
+      {1024, 640, {"--scene", "seam-walk", "--compare", "discrete,substep-discrete,continuous"}},
   };
   for (const Layout& c : cases) {
     resize(c.w, c.h);

@@ -34,6 +34,25 @@ void label(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text, bool 
   dl.AddText(at, colour, b, e);
 }
 
+void labelWrapped(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text, float width) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  const ImFont* font = ImGui::GetFont();
+  const float size = ImGui::GetFontSize();
+  if (!font) return;
+  const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, width, b, e);
+  const ImVec2 lo = dl.GetClipRectMin(), hi = dl.GetClipRectMax();
+  at.y -= extent.y - size;  // grows upwards: the last line stays where a one-line label is
+  if (at.x < lo.x - extent.x || at.x > hi.x || at.y < lo.y - extent.y || at.y > hi.y) return;
+  at.x = std::max(lo.x + 2.0f, std::min(at.x, hi.x - extent.x - 3.0f));
+  at.y = std::max(lo.y + 1.0f, std::min(at.y, hi.y - extent.y - 2.0f));
+  at = {std::round(at.x), std::round(at.y)};
+  dl.AddRectFilled({at.x - 1, at.y}, {at.x + extent.x + 2, at.y + extent.y + 1},
+                   IM_COL32(0, 0, 0, 150));
+  dl.AddText(font, size, {at.x + 1, at.y + 1}, IM_COL32(0, 0, 0, 200), b, e, width);
+  dl.AddText(font, size, at, colour, b, e, width);
+}
+
 namespace {
 // Screen corners of a rect, widened to one pixel so sub-pixel items stay visible.
 void corners(const Camera& cam, const Rect& r, ImVec2& a, ImVec2& b) {

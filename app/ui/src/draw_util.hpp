@@ -15,6 +15,9 @@ namespace tv::ui::detail {
 /// rect whole rather than cut at its edge. `anchored` text (a cell's count) stays where it is
 /// without a plate, and is left out where it would not fit whole.
 void label(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text, bool anchored = false);
+/// A label wrapped to lines of at most `width` px, its last line where `label` would put its
+/// one (the lines above it), kept inside the clip rect the same way.
+void labelWrapped(ImDrawList& dl, ImVec2 at, ImU32 colour, std::string_view text, float width);
 /// A rect's outline, at least one screen pixel wide so a thin item never vanishes.
 void outline(ImDrawList& dl, const Camera& cam, const Rect& r, ImU32 colour,
              float thickness = 1.0f);

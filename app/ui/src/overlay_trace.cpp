@@ -105,10 +105,15 @@ void drawMove(ImDrawList& dl, const Camera& cam, const World& world, const MoveT
     if (on.labels && cam.sees(unite(m.start, m.start.at(m.goal)))) {
       const ImVec2 s = cam.toScreenMin(m.start);
       const ImVec2 g = cam.toScreenMin(m.start.at(m.goal));
-      // Two labels that would overlap become one.
-      const bool apart = std::abs(g.x - s.x) > 44.0f || std::abs(g.y - s.y) > 16.0f;
-      label(dl, {s.x, s.y - 15}, pal::kSweep, apart ? "start" : "start, goal");
-      if (apart) label(dl, {g.x, g.y - 15}, pal::kSweep, "goal");
+      // Each marker keeps its own label over it; two that would overlap are stacked, the goal's
+      // a line higher, rather than merged into one that covers both markers.
+      const float width = ImGui::CalcTextSize("start").x + 8.0f;
+      const bool same = g.x == s.x && g.y == s.y;
+      const bool clash = !same && std::abs(g.x - s.x) < width && std::abs(g.y - s.y) < 16.0f;
+      label(dl, {s.x, s.y - 15}, pal::kSweep, same ? "start, goal" : "start");
+      // Stacked: a line above the start's label, wherever the goal is (a goal a little lower
+      // than the start would otherwise put its label back on the start's line).
+      if (!same) label(dl, {g.x, clash ? s.y - 29.0f : g.y - 15.0f}, pal::kSweep, "goal");
     }
   }
   // Hit labels stack in one column beside the first hit: right of it, or left of it when the

@@ -12,7 +12,7 @@ ImU32 occupiedFill(std::size_t count) {
   return (kOccupied & ~IM_COL32_A_MASK) | (alpha << IM_COL32_A_SHIFT);
 }
 
-std::span<const LegendEntry> legend(bool withCategories) {
+std::span<const LegendEntry> legend() {
   static constexpr LegendEntry kEntries[] = {
       {kSolid, Swatch::fill, "solid"},
       {kOccupied, Swatch::fill, "cell: n items"},
@@ -20,6 +20,7 @@ std::span<const LegendEntry> legend(bool withCategories) {
       {kCandidate, Swatch::outline, "candidate"},
       {kBody, Swatch::fill, "body, moving"},
       {kBodyIdle, Swatch::fill, "body, stopped"},
+      {kCategoryHues[0], Swatch::fill, "never moves, by category", true},
       {kSelected, Swatch::outline, "traced body"},
       {kSweep, Swatch::arrow, "swept segment"},
       {kHullEdge, Swatch::fill, "swept hull"},
@@ -30,11 +31,8 @@ std::span<const LegendEntry> legend(bool withCategories) {
       {kPhysics, Swatch::outline, "physics position"},
       {kRender, Swatch::outline, "render position"},
       {kPixel, Swatch::outline, "floored pixel"},
-      // Last, so that a legend without it is the list's front.
-      {kCategoryHues[0], Swatch::fill, "still, by category"},
   };
-  const std::span<const LegendEntry> all(kEntries);
-  return withCategories ? all : all.first(all.size() - 1);
+  return kEntries;
 }
 
 ImU32 categoryColour(std::string_view category) {

@@ -1,14 +1,16 @@
-// The panels: controls, inspector, counters, HUD and legend, as ImGui widget contents.
-#include "tv/app/user_message.hpp"
+// The panels around a tunable source and every source: controls, counters, HUD and legend.
 #include "tv/ui/panels.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cinttypes>
 #include <cstdio>
 #include <string>
 
+#include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
+#include "tv/ui/sim_source.hpp"
 #include "tv/ui/palette.hpp"
 
 namespace tv::ui {
@@ -73,15 +75,16 @@ void rowLabel(const char* text) {
 // Applies an edit through Params::set, which validates; a rejected value is reported, not
 // clamped, and changes nothing: the parameter goes back to the value that runs. A typed value
 // arrives keystroke by keystroke ("1", "1e", "1e9"), so the draft must not keep the "1".
-void setDraft(DebuggerState& st, const Session& session, const std::string& name, double v) {
+void setDraft(DebuggerState& st, const SimSource& source, const std::string& name, double v) {
   try {
     st.draft.set(name, v);
     st.error.clear();
   } catch (const Error& e) {
     st.error = app::userMessage(e);
+    const sim::Simulation& sim = source.simulation();
     const sim::SceneDef* scene = sim::builtinScenes().tryFind(st.draftScene);
-    const sim::Params running = st.draftScene == session.sim().scene().name || scene == nullptr
-                                    ? session.sim().params()
+    const sim::Params running = st.draftScene == sim.scene().name || scene == nullptr
+                                    ? sim.params()
                                     : scene->defaults();
     st.draft.set(name, running.get(name));
   }
@@ -89,13 +92,30 @@ void setDraft(DebuggerState& st, const Session& session, const std::string& name
 
 }  // namespace
 
-void syncDraft(DebuggerState& st, const Session& session) {
-  st.draft = session.sim().params();
-  st.draftScene = session.sim().scene().name;
-  st.draftMover = session.sim().moverSpec();
+void Actions::add(const Actions& o) {
+  restart |= o.restart;
+  apply |= o.apply;
+  step |= o.step;
+  stepBack |= o.stepBack;
+  togglePause |= o.togglePause;
+  if (o.item) item = o.item;
+  if (o.call) call = o.call;
+  if (o.inspect) inspect = o.inspect;
+  if (o.failure) failure = o.failure;
 }
 
-Actions controlsContents(const Session& session, DebuggerState& st) {
+const char* frameWord(const Source& source) {
+  return source.sim() ? "tick" : "frame";
+}
+
+void syncDraft(DebuggerState& st, const SimSource& source) {
+  st.draft = source.simulation().params();
+  st.draftScene = source.simulation().scene().name;
+  st.draftMover = source.simulation().moverSpec();
+  st.renderHz = source.renderHz();
+}
+
+Actions controlsContents(const SimSource& source, DebuggerState& st) {
   Actions a;
   if (ImGui::BeginTable("choice", 2, ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed, 172.0f);
@@ -106,7 +126,7 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
         if (ImGui::Selectable(s.name.c_str(), s.name == st.draftScene)) {
           st.draftScene = s.name;
           st.draft = s.defaults();
-          a.restart = true;
+          a.apply = true;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.description.c_str());
       }
@@ -118,7 +138,7 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
         const std::string name(m.name);
         if (ImGui::Selectable(name.c_str(), name == st.draftMover.name())) {
           st.draftMover = m.spec;
-          a.restart = true;
+          a.apply = true;
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(m.description).c_str());
       }
@@ -131,18 +151,27 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
       double v = st.draft.get(spec.name);
       const std::string id = "##" + spec.name;
       const SliderRange r = sliderRange(spec);
+      // A substep of 0 means half the smallest item: the field says what it comes to, as the
+      // substep sweep does, so the two never read 0 and 8 for the same thing.
+      char zero[64];
+      const char* format = spec.integer ? "%.0f" : "%.6g";
+      if (spec.name == sim::param::substep && v == 0.0) {
+        std::snprintf(zero, sizeof zero, "0 = tile/2 = %s px",
+                      formatNumber(st.draft.get(sim::param::tile) * 0.5).c_str());
+        format = zero;
+      }
       const bool changed = ImGui::SliderScalar(
-          id.c_str(), ImGuiDataType_Double, &v, &r.lo, &r.hi, spec.integer ? "%.0f" : "%.6g",
+          id.c_str(), ImGuiDataType_Double, &v, &r.lo, &r.hi, format,
           r.log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
       if (changed) {
         // Dragging snaps; a value typed with Ctrl+click is taken exactly.
         const bool dragging = ImGui::IsMouseDown(ImGuiMouseButton_Left);
         if (dragging) v = snapped(v, ImGui::GetIO().KeyShift, spec.integer);
-        setDraft(st, session, spec.name, v);
+        setDraft(st, source, spec.name, v);
         // Live while the slider moves when a re-run to this tick is cheap; else on release.
-        if (dragging && st.lastRerunMs < kLiveRerunMs) a.restart = true;
+        if (dragging && st.lastRerunMs < kLiveRerunMs) a.apply = true;
       }
-      if (ImGui::IsItemDeactivatedAfterEdit() && st.error.empty()) a.restart = true;
+      if (ImGui::IsItemDeactivatedAfterEdit() && st.error.empty()) a.apply = true;
       if (ImGui::IsItemActive() && st.lastRerunMs >= kLiveRerunMs) {
         ImGui::SetTooltip("re-runs on release (the last re-run took %.0f ms)", st.lastRerunMs);
       } else if (ImGui::IsItemHovered()) {
@@ -174,16 +203,17 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
     }
     rowLabel("traced body");
     // Typed as a number, so that 1e9 is read as 1e9 (an integer field kept the digits: 19).
-    const std::size_t bodies = session.sim().bodies().size();
-    double body = session.selected() ? static_cast<double>(*session.selected()) : -1.0;
+    const std::size_t bodies = source.simulation().bodies().size();
+    double body = source.tracedBody() ? static_cast<double>(*source.tracedBody()) : -1.0;
     const double one = 1.0;
     if (ImGui::InputScalar("##body", ImGuiDataType_Double, &body, &one, nullptr, "%.0f",
                            ImGuiInputTextFlags_EnterReturnsTrue)) {
       if (body == -1.0) {
+        a.item = std::optional<ItemId>{};
         st.error.clear();
       } else if (std::isfinite(body) && body >= 0.0 && body == std::floor(body) &&
                  body < static_cast<double>(bodies)) {
-        a.select = static_cast<std::size_t>(body);
+        a.item = source.simulation().bodies()[static_cast<std::size_t>(body)].item;
         st.error.clear();
       } else {
         st.error = "traced body " + formatNumber(body) + " refused: the scene has " +
@@ -223,66 +253,8 @@ Actions controlsContents(const Session& session, DebuggerState& st) {
   return a;
 }
 
-void inspectorContents(const Session& session) {
-  const sim::Simulation& s = session.sim();
-  if (!session.selected()) {
-    ImGui::TextColored(colour(pal::kDim), "no body selected");
-    return;
-  }
-  const std::size_t i = *session.selected();
-  const sim::Body& b = s.bodies()[i];
-  ImGui::TextWrapped("body %zu  %s", i, b.active ? "moving" : "stopped");
-  ImGui::TextWrapped("at (%.3f, %.3f)  size %g x %g", b.rect.x, b.rect.y, b.rect.w, b.rect.h);
-  ImGui::TextWrapped("velocity (%.1f, %.1f) px/s", b.velocity.x, b.velocity.y);
-  const auto moves = session.moves();
-  if (moves.empty()) {
-    // Say why: a body that has stopped makes no move, so there is nothing to trace.
-    ImGui::TextColored(colour(pal::kDim), "%s",
-                       b.active ? "no move traced yet" : "no move traced: the body has stopped");
-    return;
-  }
-  if (!b.active && moves.back().tick < s.ticks()) {
-    ImGui::TextColored(colour(pal::kDim), "stopped: its last move was at tick %" PRIu64,
-                       moves.back().tick);
-  }
-  // Newest first: the move on screen is the one to read.
-  for (std::size_t k = moves.size(); k-- > 0;) {
-    const TracedMove& tm = moves[k];
-    const MoveTrace& m = tm.trace;
-    ImGui::PushID(static_cast<int>(k));
-    const ImGuiTreeNodeFlags open = k + 1 == moves.size() ? ImGuiTreeNodeFlags_DefaultOpen : 0;
-    const bool shown = ImGui::TreeNodeEx("move", open, "tick %" PRIu64 " move by %s: %zu hits",
-                                         tm.tick, std::string(m.mover).c_str(), m.hits.size());
-    if (shown) {
-      ImGui::TextWrapped("%zu cells, %zu candidates, %zu legs, %zu substeps", m.cells.size(),
-                  m.candidates.size(), m.legs.size(), m.substeps.size());
-      ImGui::TextWrapped("(%.3f, %.3f) -> goal (%.3f, %.3f)", m.start.x, m.start.y, m.goal.x, m.goal.y);
-      ImGui::TextWrapped("ended at (%.3f, %.3f)", m.final.x, m.final.y);
-      // Two lines per hit, the fields of the Collision record as core filled them.
-      for (std::size_t h = 0; h < m.hits.size(); ++h) {
-        const Collision& c = m.hits[h];
-        const std::string response(s.world().responseName(c.response));
-        char ti[32];
-        std::snprintf(ti, sizeof ti, c.overlaps ? "overlapping" : "ti %.4f", c.ti);
-        ImGui::TextColored(colour(pal::kHit), "hit %zu", h + 1);
-        ImGui::SameLine();
-        ImGui::TextWrapped("%s  %s  normal %+.0f,%+.0f  %s%s", session.describe(c.other).c_str(), ti,
-                    c.normal.x + 0.0, c.normal.y + 0.0, response.c_str(),
-                    c.corner ? " (corner)" : "");
-        ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kDim));
-        // One point a line, unwrapped: ImGui wraps after a '.', which split "87.000" in two.
-        ImGui::Text("   touch (%.3f, %.3f)", c.touch.x, c.touch.y);
-        ImGui::Text("   target (%.3f, %.3f)", c.target.x, c.target.y);
-        ImGui::PopStyleColor();
-      }
-      ImGui::TreePop();
-    }
-    ImGui::PopID();
-  }
-}
-
-void countersContents(const Session& session) {
-  const sim::Simulation& s = session.sim();
+void countersContents(const SimSource& source) {
+  const sim::Simulation& s = source.simulation();
   const sim::Counters& c = s.counters();
   // Rows a scene does not use stay hidden; a failure count that is not zero shows red.
   struct Row {
@@ -320,7 +292,7 @@ void countersContents(const Session& session) {
       ImGui::TextColored(colour(bad ? pal::kBad : pal::kLabel), "%" PRIu64, r.value);
     }
     const sim::TraceStats& t = s.traceStats();
-    const auto moves = session.moves();
+    const auto moves = source.history();
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted("candidates per move");
@@ -330,7 +302,7 @@ void countersContents(const Session& session) {
                   static_cast<double>(t.candidates) / static_cast<double>(t.moves));
     } else {
       // A traced body that has not moved yet is not "no traced body".
-      ImGui::TextColored(colour(pal::kDim), session.selected() ? "(no move yet)" : "(no traced body)");
+      ImGui::TextColored(colour(pal::kDim), source.traced() ? "(no move yet)" : "(no traced body)");
     }
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -344,33 +316,72 @@ void countersContents(const Session& session) {
   }
 }
 
-void hudContents(const Session& session, const DebuggerState& st) {
-  const sim::Simulation& s = session.sim();
-  ImGui::Text("%s", s.scene().name.c_str());
-  ImGui::SameLine();
-  ImGui::TextColored(colour(pal::kDim), "|");
-  ImGui::SameLine();
-  ImGui::Text("%s", s.moverSpec().name().c_str());
-  ImGui::SameLine();
-  ImGui::TextColored(colour(pal::kDim), "|");
-  ImGui::SameLine();
-  ImGui::Text("tick %" PRIu64, s.ticks());
-  ImGui::SameLine();
-  ImGui::TextColored(colour(pal::kDim), "|");
-  ImGui::SameLine();
-  ImGui::TextColored(colour(st.paused ? pal::kRender : pal::kGood),
-                     st.paused ? "paused" : "running");
+void hudContents(const Source& source, const DebuggerState& st) {
+  const auto bar = [] {
+    ImGui::SameLine();
+    ImGui::TextColored(colour(pal::kDim), "|");
+    ImGui::SameLine();
+  };
+  const SimSource* sim = source.sim();
+  ImGui::Text("%s", source.name().c_str());
+  bar();
+  ImGui::Text("%s", source.moverName().c_str());
+  bar();
+  if (sim) {
+    ImGui::Text("tick %" PRIu64, source.frame());
+  } else {
+    ImGui::Text("frame %" PRIu64 " (%" PRIu64 "..%" PRIu64 ")", source.frame(),
+                source.firstFrame(), source.lastFrame());
+  }
+  if (const auto k = source.call()) {
+    bar();
+    ImGui::Text("call %u of %zu", *k, source.calls().size());
+  } else if (!sim) {
+    bar();
+    ImGui::Text("end of frame (%zu calls)", source.calls().size());
+  }
+  bar();
+  ImGui::TextColored(colour(st.paused ? pal::kRender : pal::kGood), st.paused ? "paused" : "running");
   // The timing line holds only simulated time: a wall-clock value would break byte-exact goldens.
-  char render[32] = "= tick";
-  if (session.interpolating()) std::snprintf(render, sizeof render, "%.0f Hz", st.renderHz);
-  ImGui::TextColored(colour(pal::kDim), "dt %.2f ms   render %s   alpha %.3f   zoom %.2f px/unit",
-                     s.dt() * 1000.0, render, session.interpolating() ? s.alpha() : 1.0,
-                     st.camera.scale());
+  if (sim) {
+    const sim::Simulation& s = sim->simulation();
+    char render[32] = "= tick";
+    if (sim->interpolating()) std::snprintf(render, sizeof render, "%.0f Hz", sim->renderHz());
+    ImGui::TextColored(colour(pal::kDim), "dt %.2f ms   render %s   alpha %.3f   zoom %.2f px/unit",
+                       s.dt() * 1000.0, render, sim->interpolating() ? s.alpha() : 1.0,
+                       st.camera.scale());
+  } else {
+    const auto traced = source.traced();
+    ImGui::TextColored(colour(pal::kDim), "traced: %s   %zu items   zoom %.2f px/unit",
+                       traced ? source.describe(*traced).c_str() : "none", source.world().count(),
+                       st.camera.scale());
+  }
+  // What the source wants known (a file cut short, a map with nothing solid), whole.
+  for (const std::string& note : source.notes()) {
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 560.0f);
+    ImGui::TextColored(colour(pal::kBad), "%s", note.c_str());
+    ImGui::PopTextWrapPos();
+  }
 }
 
-void legendContents(int columns, bool withCategories) {
+int legendColumns(float width, bool recorded) {
+  // A column holds the swatch and the widest label shown, and never less than ~150 px (the
+  // scene legend's columns, whose labels are short).
+  float widest = 0.0f;
+  for (const pal::LegendEntry& e : pal::legend()) {
+    if (e.recordedOnly && !recorded) continue;
+    widest = std::max(widest, ImGui::CalcTextSize(e.label).x);
+  }
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float column = std::max(150.0f, widest + ImGui::GetTextLineHeight() +
+                                            style.ItemSpacing.x + 2.0f * style.CellPadding.x + 4.0f);
+  return std::clamp(static_cast<int>(width / column), 1, 8);
+}
+
+void legendContents(int columns, bool recorded) {
   if (!ImGui::BeginTable("legend", columns)) return;
-  for (const pal::LegendEntry& e : pal::legend(withCategories)) {
+  for (const pal::LegendEntry& e : pal::legend()) {
+    if (e.recordedOnly && !recorded) continue;
     ImGui::TableNextColumn();
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const float s = ImGui::GetTextLineHeight();

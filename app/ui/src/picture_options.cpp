@@ -10,7 +10,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <string_view>
+
+#include "tv/error.hpp"
+#include "tv/sim/scene.hpp"
 
 namespace tv::ui {
 
@@ -107,6 +111,10 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
     }
     if (arg == "--timing") {
       o.timing = true;
+      continue;
+    }
+    if (arg == "--first-failure") {
+      o.firstFailure = true;
       continue;
     }
     if (arg.size() < 3 || arg.substr(0, 2) != "--") {
@@ -224,6 +232,32 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
                      "'"};
   }
   return o;
+}
+
+std::string sceneAndMoverList() {
+  std::string out = "scenes:\n";
+  char line[512];
+  for (const sim::SceneDef& s : sim::builtinScenes().all()) {
+    std::snprintf(line, sizeof line, "  %-16s %-11s %s\n", s.name.c_str(), s.category.c_str(),
+                  s.description.c_str());
+    out += line;
+    // Its parameters, as flags with their defaults.
+    std::string flags;
+    const sim::Params defaults = s.defaults();
+    for (const sim::ParamSpec& p : defaults.specs()) {
+      if (!flags.empty()) flags += ' ';
+      flags += "--" + p.name + ' ' + formatNumber(p.value);
+    }
+    std::snprintf(line, sizeof line, "  %-16s %-11s %s\n", "", "", flags.c_str());
+    out += line;
+  }
+  out += "movers:\n";
+  for (const MoverEntry& m : moverTable()) {
+    std::snprintf(line, sizeof line, "  %-16s %s\n", std::string(m.name).c_str(),
+                  std::string(m.description).c_str());
+    out += line;
+  }
+  return out;
 }
 
 }  // namespace tv::ui

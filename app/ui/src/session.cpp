@@ -1,146 +1,174 @@
+// The session: panels in lockstep at one frame, one call, one traced item.
 #include "tv/ui/session.hpp"
 
 #include <algorithm>
 
 #include "tv/error.hpp"
+#include "tv/ui/sim_source.hpp"
 
 namespace tv::ui {
 
-namespace {
-constexpr std::string_view kWhere = "tv::ui::Session";
+Session::Session(std::unique_ptr<Source> primary) {
+  if (!primary) fail("tv::ui::Session", "needs a source");
+  panels_.push_back(std::move(primary));
+}
 
-void checkBody(const sim::Simulation& s, std::optional<std::size_t> body) {
-  if (body && *body >= s.bodies().size()) {
-    fail(kWhere, "body " + std::to_string(*body) + " does not exist (the scene has " +
-                     std::to_string(s.bodies().size()) + " bodies: 0.." +
-                     std::to_string(s.bodies().size() - 1) + ")");
+Session::Session(std::vector<std::unique_ptr<Source>> panels) : panels_(std::move(panels)) {
+  if (panels_.empty() || !panels_.front()) fail("tv::ui::Session", "needs a source");
+}
+
+std::vector<Source*> Session::panels() {
+  std::vector<Source*> out;
+  for (auto& p : panels_) out.push_back(p.get());
+  return out;
+}
+
+void Session::setPanels(std::vector<std::unique_ptr<Source>> panels, std::uint64_t landOn) {
+  if (panels.empty()) fail("tv::ui::Session", "needs a source");
+  const std::optional<ItemId> item = traced();
+  // Built and brought to the frame first, so a refusal leaves the session as it was.
+  for (auto& p : panels) {
+    if (item && p->world().has(*item)) p->trace(item);
   }
-}
-}  // namespace
-
-Session::Session(const sim::SceneDef& scene, const sim::Params& params, MoverSpec mover,
-                 std::optional<std::size_t> selected)
-    : sim_(scene, params, mover) {
-  select(selected);
-}
-
-void Session::select(std::optional<std::size_t> body) {
-  checkBody(sim_, body);
-  selected_ = body;
-  sim_.traceBody(body);
-  moves_.clear();
-}
-
-void Session::setHistoryLength(std::size_t n) {
-  history_ = std::max<std::size_t>(n, 1);
-  if (moves_.size() > history_) {
-    moves_.erase(moves_.begin(), moves_.end() - static_cast<std::ptrdiff_t>(history_));
-  }
-}
-
-void Session::noteTrace() {
-  const MoveTrace* t = sim_.lastTrace();
-  if (!t) return;
-  if (moves_.size() == history_) moves_.erase(moves_.begin());
-  moves_.push_back({sim_.ticks(), *t});
-}
-
-void Session::tick() {
-  sim_.tick();
-  noteTrace();
-  noteFailure();
-  interpolating_ = false;  // drawn at the tick: the accumulator's alpha no longer applies
-}
-
-int Session::frame(double seconds) {
-  const int n = sim_.frame(seconds);
-  interpolating_ = true;
-  // A frame that ran several ticks leaves only its last tick's trace in the simulation.
-  if (n > 0) noteTrace();
-  noteFailure();
-  return n;
-}
-
-std::uint64_t failureCount(const sim::Counters& c) {
-  return c.tunnelled + c.escapes + c.overlaps + c.jitter + c.snags;
-}
-
-void Session::noteFailure() {
-  // Counts only grow as ticks run; none means the simulation was taken back before the first
-  // failure (a seek or a restart), and the tick recorded no longer holds.
-  if (failureCount(sim_.counters()) == 0) {
-    firstFailure_.reset();
-  } else if (!firstFailure_) {
-    firstFailure_ = sim_.ticks();
+  std::vector<std::unique_ptr<Source>> old = std::move(panels_);
+  panels_ = std::move(panels);
+  try {
+    goTo(landOn, true);
+  } catch (...) {
+    panels_ = std::move(old);
+    throw;
   }
 }
 
-void Session::advanceTo(std::uint64_t t, double renderHz, bool stopAtEnd) {
-  if (t < sim_.ticks()) {
-    fail(kWhere, "tick " + std::to_string(t) + " is behind the current tick " +
-                     std::to_string(sim_.ticks()) + " (ticks must be in increasing order)");
+void Session::compareWith(const std::vector<MoverSpec>& others) {
+  std::vector<std::unique_ptr<Source>> rest;
+  for (const MoverSpec& m : others) rest.push_back(primary().rerun(m));  // may throw: no change
+  compareWith(std::move(rest));
+}
+
+void Session::compareWith(std::vector<std::unique_ptr<Source>> others) {
+  // The primary is kept as it is: its traces, its tuning.
+  const std::uint64_t f = primary().frame();
+  const auto call = primary().call();
+  const auto item = primary().traced();
+  panels_.resize(1);
+  for (auto& r : others) {
+    if (item && r->world().has(*item)) r->trace(item);
+    r->goTo(f);
+    panels_.push_back(std::move(r));
   }
-  // With stopAtEnd, a scene that has ended goes no further: nothing happens after its end.
-  const auto more = [&] { return sim_.ticks() < t && !(stopAtEnd && sim_.finished()); };
-  if (renderHz <= 0.0) {
-    while (more()) tick();
-    return;
+  if (call) selectCall(call);
+}
+
+// -- time ----------------------------------------------------------------------------------------
+
+std::uint64_t Session::lastFrame() const {
+  std::uint64_t last = 0;
+  for (const auto& p : panels_) last = std::max(last, p->lastFrame());
+  return last;
+}
+
+bool Session::ended() const {
+  return std::all_of(panels_.begin(), panels_.end(), [](const auto& p) { return p->ended(); });
+}
+
+std::uint64_t Session::goTo(std::uint64_t f, bool stopAtEnd) {
+  std::uint64_t reached = 0;
+  for (auto& p : panels_) {
+    SimSource* s = p->sim();
+    if (stopAtEnd && s && f > s->frame()) {
+      // Forward, no further than the scene's end; a mover that ended early then runs on to
+      // the frame the others reach (below).
+      s->advanceTo(f, 0.0, true);
+    } else {
+      p->goTo(f);
+    }
+    reached = std::max(reached, p->frame());
   }
-  const double frameTime = 1.0 / renderHz;
-  while (more()) {
-    frame(frameTime);
-    if (sim_.ticks() > t) {
-      fail(kWhere, "a render rate of " + formatNumber(renderHz) +
-                       " Hz runs several ticks per frame and stepped over tick " +
-                       std::to_string(t) + "; use a rate of at least 1 / dt");
+  for (auto& p : panels_) {
+    if (p->frame() < reached && p->sim()) p->goTo(reached);
+  }
+  return primary().frame();
+}
+
+void Session::play() {
+  for (auto& p : panels_) p->play();
+}
+
+void Session::selectCall(std::optional<std::uint32_t> k) {
+  Source& first = primary();
+  first.selectCall(k);
+  const std::optional<ItemId> item =
+      k && *k < first.calls().size() ? std::optional<ItemId>(first.calls()[*k].item) : std::nullopt;
+  for (std::size_t i = 1; i < panels_.size(); ++i) {
+    Source& p = *panels_[i];
+    if (p.replay() || !k) {
+      p.selectCall(k);  // a recording's re-runs make the same calls in the same order
+      continue;
+    }
+    // Another mover's tick: the same item's move, wherever it falls among that tick's moves.
+    std::optional<std::uint32_t> same;
+    const auto calls = p.calls();
+    for (std::uint32_t j = 0; j < calls.size(); ++j) {
+      if (item && calls[j].item == *item) same = j;
+    }
+    if (same) {
+      p.selectCall(same);
+    } else if (item) {
+      p.trace(item);
     }
   }
 }
 
-void Session::restart(const sim::Params& params, MoverSpec mover) {
-  sim_.restart(params, mover);
-  firstFailure_.reset();
-  checkBody(sim_, selected_);  // the body count may have changed
-  select(selected_);
-  interpolating_ = false;
-}
-
-WorldPicture Session::picture() {
-  renderRects_.clear();
-  if (interpolating_) {
-    for (std::size_t i = 0; i < sim_.bodies().size(); ++i)
-      renderRects_.push_back(sim_.renderRect(i));
+void Session::stepCall(int direction) {
+  const std::size_t n = calls().size();
+  const auto current = call();
+  if (direction > 0) {
+    if (!current && n > 0) return selectCall(0);
+    if (current && *current + 1 < n) return selectCall(*current + 1);
+    // Past the frame's last call: the next frame's first.
+    if (frame() < lastFrame() || !ended()) {
+      goTo(frame() + 1);
+      if (!calls().empty()) selectCall(0);
+    }
+    return;
   }
-  WorldPicture p;
-  p.world = &sim_.world();
-  p.solids = sim_.solids();
-  p.bodies = sim_.bodies();
-  p.renderRects = renderRects_;
-  p.selected = selected_;
-  p.moves = moves_;
-  return p;
-}
-
-Rect Session::followView(double minSide) const {
-  if (moves_.empty()) return sim_.camera();
-  // The last move only: earlier ones trail off the edge rather than shrink the action.
-  const MoveTrace& t = moves_.back().trace;
-  Rect box = unite(t.start, t.start.at(t.goal));
-  box = unite(box, t.start.at(t.final));
-  for (const Collision& c : t.hits) box = unite(box, c.otherRect);
-  const double pad = std::max(box.w, box.h) * 0.25;
-  box = {box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad};
-  const Vec2 c = box.center();
-  const double w = std::max(box.w, minSide), h = std::max(box.h, minSide);
-  return {c.x - w * 0.5, c.y - h * 0.5, w, h};
-}
-
-std::string Session::describe(ItemId id) const {
-  const auto bodies = sim_.bodies();
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    if (bodies[i].item == id) return "body " + std::to_string(i);
+  if (current && *current > 0) return selectCall(*current - 1);
+  if (current) return selectCall(std::nullopt);
+  if (frame() > firstFrame()) {
+    goTo(frame() - 1);
+    const std::size_t m = calls().size();
+    if (m > 0) selectCall(static_cast<std::uint32_t>(m - 1));
   }
-  return "solid " + std::to_string(id.index);
+}
+
+// -- tracing -------------------------------------------------------------------------------------
+
+void Session::trace(std::optional<ItemId> item) {
+  for (auto& p : panels_) p->trace(item);
+}
+
+void Session::showFailure(const Failure& f) {
+  goTo(f.frame);
+  if (f.item.valid()) trace(f.item);
+  if (f.call && !primary().sim()) {
+    if (*f.call < calls().size()) selectCall(f.call);
+    return;
+  }
+  if (!f.item.valid()) return;
+  // A scene's tick: that item's move, wherever it falls among the tick's moves.
+  std::optional<std::uint32_t> move;
+  const auto all = calls();
+  for (std::uint32_t k = 0; k < all.size(); ++k) {
+    if (all[k].item == f.item) move = k;
+  }
+  if (move) selectCall(move);
+}
+
+Rect Session::followView() const {
+  Rect r = primary().followView();
+  for (const auto& p : panels_) r = unite(r, p->followView(primary().followMinSide()));
+  return r;
 }
 
 }  // namespace tv::ui

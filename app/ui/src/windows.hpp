@@ -1,6 +1,6 @@
 #pragma once
-// The fixed windows every debugger layout places (internal to tv_ui): the scene's layout
-// (layout.cpp) and a recording's (recording_view.cpp) build their screens from these.
+// The fixed windows every layout places (internal to tv_ui): view.cpp builds its screens
+// from these.
 
 #include "imgui.h"
 
@@ -19,8 +19,8 @@ void place(ImVec2 pos, ImVec2 size, ImVec2 pivot = {0, 0});
 /// A borderless window that only hosts a world view; pair with ImGui::End().
 bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size);
 /// The colour legend across the bottom of a world view at `origin` of `size`, in `columns`;
-/// returns how much of the view's bottom it covers. `withCategories`: the picture has items drawn
-/// in their category's colour.
-float legendOverlay(ImVec2 origin, ImVec2 size, int columns, bool withCategories = false);
+/// returns how much of the view's bottom it covers. `recorded`: a recording's or a live game's
+/// view (legendContents).
+float legendOverlay(ImVec2 origin, ImVec2 size, int columns, bool recorded);
 
 }  // namespace tv::ui::detail

@@ -165,6 +165,14 @@ sim::SceneDef makeScene(Level level) {
   def.name = level.name;
   def.description = level.description;
   def.params = levelParams(level, builtin);
+  if (builtin) {
+    // Counted by the same rules, so read the same way.
+    def.missesFail = builtin->missesFail;
+    def.missesWord = builtin->missesWord;
+    def.tagNames = builtin->tagNames;
+  } else {
+    def.tagNames = {"solid", "tile", "object"};  // a tile layer's tiles, an object layer's rects
+  }
   if (builtin) checkAgainstRules(level, *builtin, builtin->build(def.defaults()));
   const double fileOffset = builtin ? paramOr(level, sim::param::offset, 0.0) : 0.0;
   const Rect frame = level.camera.value_or(bounds(level));
@@ -204,9 +212,12 @@ sim::SceneDef makeScene(Level level) {
     s.solids.reserve(lv.solids.size());
     for (const sim::Solid& solid : lv.solids)
       s.solids.push_back({shifted(solid.rect, by), solid.tag, solid.oneWay});
+    s.solidNames = lv.solidNames;
+    s.bodyNames.clear();
     s.bodies.clear();
     s.bodies.reserve(lv.bodies.size());
     for (const LevelBody& b : lv.bodies) {
+      s.bodyNames.push_back(b.name);
       sim::Body body = b.body;
       body.rect = shifted(body.rect, by);
       if (!builtin && (b.motion == Motion::walker || b.motion == Motion::player) && b.facingLeft)

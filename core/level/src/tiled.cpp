@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
@@ -169,6 +170,14 @@ struct MapContext {
   std::string encoding, compression;  // of the layer being read
   Level* level;
   std::vector<std::string> layerNames;  // every layer seen, groups' included
+  // Objects of a class the loader makes nothing of (not a body, not collidable), by class:
+  // how many, and the first one's name and place, for the note that says so.
+  struct Ignored {
+    std::string cls;
+    std::size_t count = 0;
+    std::string first;
+  };
+  std::vector<Ignored> ignored;
 };
 
 /// The gids of one block of `w`×`h` tiles (a finite layer, or a chunk), flip flags masked.
@@ -356,11 +365,13 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid,
   cls = lower(cls);
   Level& lv = *m.level;
   const std::string shape = shapeOf(o);
+  const std::string name = o.has("name") ? o["name"].string() : "";
   const double size = numberProperty(o, "size", 0.0, 1e4).value_or(0.0);
   if (cls == "player" || cls == "walker") {
     const Motion motion = cls == "player" ? Motion::player : Motion::walker;
     LevelBody lb = bodyOf(motion, objectRect(o, offset, size > 0 ? size : 12.0, true));
     readWalker(lb, o);
+    lb.name = name;
     if (motion == Motion::player) {
       if (auto e = property(o, "every")) lb.jump.every = e->whole(1, 1'000'000);
       if (auto e = property(o, "phase")) lb.jump.phase = e->whole(0, 1'000'000);
@@ -378,6 +389,7 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid,
     if (cls == "bullet") {
       LevelBody lb = bodyOf(Motion::bullet, objectRect(o, offset, side, false));
       lb.body.velocity = Vec2{std::cos(degrees(angle)), std::sin(degrees(angle))} * speed;
+      lb.name = name;
       lv.bodies.push_back(lb);
       return;
     }
@@ -403,13 +415,31 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid,
       LevelBody lb = bodyOf(Motion::bullet, {at.x - side / 2, at.y - side / 2, side, side});
       lb.body.velocity = Vec2{std::cos(a), std::sin(a)} * speed;
       lb.body.group = static_cast<std::uint32_t>(k);
+      // A spawner's bullets are its name and their number ("turret 3").
+      if (!name.empty()) lb.name = name + " " + std::to_string(k);
       lv.bodies.push_back(lb);
     }
     return;
   }
   const bool oneWay = layerOneWay || flag(o, "oneway");
   const bool solid = layerSolid || oneWay || flag(o, "collidable");
-  if (!solid) return;
+  if (!solid) {
+    // A class the loader knows nothing of is not dropped in silence: the notes say so, once per
+    // class, with the first such object.
+    if (!cls.empty()) {
+      auto it = std::find_if(m.ignored.begin(), m.ignored.end(),
+                             [&](const MapContext::Ignored& i) { return i.cls == cls; });
+      if (it == m.ignored.end()) {
+        const Rect r = objectRect(o, offset, 0.0, false);
+        char where[96];
+        std::snprintf(where, sizeof where, " at (%g, %g)", r.x, r.y);
+        m.ignored.push_back({cls, 0, (name.empty() ? "an object" : "'" + name + "'") + where});
+        it = m.ignored.end() - 1;
+      }
+      ++it->count;
+    }
+    return;
+  }
   if (!shape.empty())
     o.failPlain("unsupported: a collidable " + shape + " (only rectangles can be solid)");
   if (auto r = o.find("rotation"); r && r->number() != 0.0) {
@@ -421,6 +451,10 @@ void readObject(MapContext& m, const JsonAt& o, Vec2 offset, bool layerSolid,
   const Rect r = objectRect(o, offset, 0.0, false);
   checkCoordinate(o, std::max(std::abs(r.x), std::abs(r.y)) + std::max(r.w, r.h));
   lv.solids.push_back({r, 2, oneWay});
+  if (!name.empty()) {
+    lv.solidNames.resize(lv.solids.size());
+    lv.solidNames.back() = name;
+  }
 }
 
 // [SECTION] the map -------------------------------------------------------------------------------
@@ -468,7 +502,7 @@ Level parseTiledMap(std::string_view text, std::string_view file, const TiledOpt
   lv.source = name;
   lv.name = std::filesystem::path(name).stem().string();
   lv.description = "Tiled map " + name;
-  MapContext m{&map, &options, readTilesets(map, options), 16, 16, "", "", &lv, {}};
+  MapContext m{&map, &options, readTilesets(map, options), 16, 16, "", "", &lv, {}, {}};
   m.tileW = map["tilewidth"].positive(1e4);
   m.tileH = map["tileheight"].positive(1e4);
   lv.tile = std::min(m.tileW, m.tileH);
@@ -508,6 +542,12 @@ Level parseTiledMap(std::string_view text, std::string_view file, const TiledOpt
     return b.motion == Motion::walker || b.motion == Motion::player;
   });
   if (!gravity && !anyWalker) lv.gravity = {};
+  for (const MapContext::Ignored& i : m.ignored) {
+    lv.notes.push_back(name + ": " + std::to_string(i.count) + " object" + (i.count == 1 ? "" : "s") +
+                       " of class '" + i.cls + "' ignored (first: " + i.first +
+                       "): a class makes a body when it is player, walker, bullet or spawner, "
+                       "and a solid when the object is collidable");
+  }
   if (lv.solids.empty()) {
     lv.notes.push_back(name +
                        ": nothing is solid: give a layer, tile or object the bool property "

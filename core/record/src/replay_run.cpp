@@ -647,6 +647,27 @@ std::optional<Divergence> Replay::validate(const std::function<bool(std::uint64_
   }
 }
 
+WhatIfReport Replay::checkRecorded() {
+  Impl& d = *impl_;
+  WhatIfReport report;
+  // whatIf's first pass alone: the recorded calls replayed exactly, each move classified.
+  struct Done {
+    Replay::Impl& d;
+    std::optional<MoverSpec> spec;
+    ~Done() {
+      d.report = nullptr;
+      d.classifyRecorded = false;
+      d.options.mover = spec;
+    }
+  } done{d, d.options.mover};
+  d.report = &report;
+  d.options.mover.reset();
+  d.classifyRecorded = true;
+  d.enterFrame(0, true);
+  while (!atEnd()) (void)step(nullptr);
+  return report;
+}
+
 WhatIfReport Replay::whatIf(double farAway) {
   Impl& d = *impl_;
   if (!d.whatIf()) fail("tv::Replay::whatIf", "no mover to re-run with: set ReplayOptions::mover");

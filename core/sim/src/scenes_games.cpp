@@ -131,6 +131,7 @@ SceneDef platformer() {
   d.countMeaning = "players (they do not meet; each jumps on its own beat)";
   SceneDef def;
   def.category = "Games";
+  def.tagNames = {"tile"};
   def.name = "platformer";
   def.description = "a small level with a scripted player: run, jump, land, fall and respawn";
   def.params = commonParams(d);
@@ -227,6 +228,7 @@ SceneDef crowd() {
   d.countMeaning = "movers; the world grows with them";
   SceneDef def;
   def.category = "Games";
+  def.tagNames = {"tile"};
   def.name = "crowd";
   def.description = "many small movers bouncing among tiles ~30% solid; the world grows with them";
   def.params = commonParams(d);
@@ -358,6 +360,7 @@ SceneDef bumpCrowd() {
   d.countMeaning = "movers; 2000 px world up to 10^4, 6320 px beyond";
   SceneDef def;
   def.category = "Games";
+  def.tagNames = {"tile"};
   def.name = "bump-crowd";
   def.description = "bump.lua's benchmark: movers sliding among random platforms, 30% solid";
   def.params = commonParams(d);

@@ -108,6 +108,7 @@ SceneDef bulletsWall() {
   d.countMeaning = "projectiles, one per lane";
   SceneDef def;
   def.category = "Tunnelling";
+  def.tagNames = {"wall tile"};
   def.name = std::string(kBulletsWall);
   def.description =
       "projectiles at random sub-step phases into a one-tile wall; counts how many end past it";
@@ -205,8 +206,10 @@ SceneDef cornerGraze() {
   d.countMeaning = "shots, each at its own tile, cycling through 9 sideways offsets";
   SceneDef def;
   def.category = "Tunnelling";
+  def.tagNames = {"tile"};
   def.name = std::string(kCornerGraze);
   def.description = "diagonal shots at tile corners: exact corner hits and exact grazes";
+  def.missesWord = "grazes";  // a shot aimed past the corner must pass it: not a failure
   def.params = commonParams(d);
   def.camera = [](const Params& p) {
     const Common c = readCommon(p);
@@ -309,9 +312,11 @@ SceneDef bulletsEnemies() {
   d.countMeaning = "crossings (one bullet and one enemy each)";
   SceneDef def;
   def.category = "Tunnelling";
+  def.tagNames = {"tile"};
   def.name = std::string(kBulletsEnemies);
   def.description =
       "bullets and enemies whose paths cross mid-tick; one-at-a-time moves miss, a batch meets";
+  def.missesFail = true;  // a bullet and an enemy that crossed without meeting: a failure
   def.params = commonParams(d);
   def.params.push_back(intParam("batch",
                                 "1: move everything through one tv::Batch (moving vs moving); "

@@ -89,6 +89,7 @@ SceneDef restWall() {
   d.countMeaning = "bodies, one room each";
   SceneDef def;
   def.category = "Resting";
+  def.tagNames = {"solid", "floor tile", "wall tile"};
   def.name = "rest-wall";
   def.description = "a body pushed against a wall while standing on a floor; must not jitter";
   def.params = commonParams(d);
@@ -165,6 +166,7 @@ SceneDef restFloor() {
   d.countMeaning = "bodies dropped side by side";
   SceneDef def;
   def.category = "Resting";
+  def.tagNames = {"solid", "floor tile", "wall tile"};
   def.name = "rest-floor";
   def.description = "bodies dropped onto a floor under gravity; once landed they must not move";
   def.params = commonParams(d);
@@ -253,6 +255,7 @@ SceneDef seamWalk() {
   d.countMeaning = "walkers (they do not meet each other)";
   SceneDef def;
   def.category = "Resting";
+  def.tagNames = {"solid", "floor tile", "wall tile"};
   def.name = "seam-walk";
   def.description = "walking along a floor of 1000 separate tiles under gravity; no seam may snag";
   def.params = commonParams(d);
@@ -335,6 +338,7 @@ SceneDef bounceGap() {
   d.countMeaning = "balls, one slot each";
   SceneDef def;
   def.category = "Tunnelling";
+  def.tagNames = {"solid", "floor tile", "wall"};
   def.name = "bounce-gap";
   def.description = "balls bouncing in a gap narrower than one tick's travel; counts escapes";
   def.params = commonParams(d);

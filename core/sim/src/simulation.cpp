@@ -10,6 +10,7 @@
 #include <string>
 
 #include "tv/error.hpp"
+#include "tv/outcome.hpp"
 #include "tv/solid.hpp"
 
 namespace tv::sim {
@@ -83,12 +84,23 @@ Simulation::Simulation(const SceneDef& scene, const Params& params, MoverSpec mo
 Simulation::Simulation(std::string_view scene, std::string_view mover)
     : Simulation(findScene(scene), findScene(scene).defaults(), parseMover(mover)) {}
 
+std::optional<std::size_t> Simulation::solidOf(ItemId id) const {
+  // Solids are the world's first items, added in order: their slots are 0..n-1 (a rebuild
+  // reuses them), so the slot finds the solid and the generation confirms it.
+  if (id.index < solidItems_.size() && solidItems_[id.index] == id) return id.index;
+  return std::nullopt;
+}
+
 void Simulation::build(SceneSetup setup) {
+  events_.clear();
   world_ = World(setup.cellSize);
   gravity_ = setup.gravity;
   rules_ = std::move(setup.rules);
   solids_ = std::move(setup.solids);
   bodies_ = std::move(setup.bodies);
+  solidNames_ = std::move(setup.solidNames);
+  bodyNames_ = std::move(setup.bodyNames);
+  solidItems_.clear();
   const std::size_t items = solids_.size() + bodies_.size();
   bodyBySlot_.assign(items, -1);
   tagBySlot_.assign(items, 0);
@@ -105,6 +117,7 @@ void Simulation::build(SceneSetup setup) {
     grow(id);
     tagBySlot_[id.index] = s.tag;
     oneWayBySlot_[id.index] = s.oneWay ? 1 : 0;
+    solidItems_.push_back(id);
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];
@@ -197,6 +210,7 @@ void Simulation::step(double dt) {
 void Simulation::stepOrThrow(double dt) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
   traceValid_ = false;
+  events_.clear();
   TickContext ctx = context(dt);
   if (rules_) {
     rules_->control(ctx);
@@ -209,8 +223,10 @@ void Simulation::stepOrThrow(double dt) {
     moveOneByOne(ctx, dt);
   }
   if (rules_) {
+    const Counters before = counters_;
     rules_->afterTick(ctx);
     for (std::size_t i = 0; i < bodies_.size(); ++i) syncWorld(i);
+    noteCounted(before, -1, {}, 0);
   }
   ++tick_;
   record();
@@ -273,10 +289,53 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
     counters_.collisions += r.collisions.size();
     if (traced) noteTrace();
     if (rules_) {
+      const Counters before = counters_;
       rules_->afterMove(ctx, i, goal, r.collisions);
       syncWorld(i);
+      noteCounted(before, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
+                  r.collisions.size());
+    } else if (manyCollisions_ > 0 && r.collisions.size() > manyCollisions_) {
+      noteCounted(counters_, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
+                  r.collisions.size());
     }
   }
+}
+
+void Simulation::noteCounted(const Counters& before, std::int64_t body, const Rect& start,
+                             std::size_t collisions) {
+  // Most moves count nothing: one compare of the failure counters and out.
+  const Counters& now = counters_;
+  const bool counted = now.tunnelled != before.tunnelled || now.farPushOuts != before.farPushOuts ||
+                       now.misses != before.misses || now.escapes != before.escapes ||
+                       now.overlaps != before.overlaps || now.jitter != before.jitter ||
+                       now.snags != before.snags;
+  const bool many = body >= 0 && manyCollisions_ > 0 && collisions > manyCollisions_;
+  if (!counted && !many) return;
+  TickEvent e;
+  e.tick = tick_ + 1;
+  e.body = body;
+  e.collisions = collisions;
+  MoveOutcome outcome;
+  if (body >= 0 && (now.tunnelled != before.tunnelled || now.overlaps != before.overlaps)) {
+    const Body& b = bodies_[static_cast<std::size_t>(body)];
+    const auto filter = [this](ItemId item, ItemId other) { return respond(item, other); };
+    outcome = judgeMove(world_, b.item, start, b.rect, filter);
+  }
+  const auto add = [&](Counted what, std::uint64_t was, std::uint64_t is, ItemId other) {
+    if (is == was) return;
+    e.what = what;
+    e.count = is - was;
+    e.other = other;
+    events_.push_back(e);
+  };
+  add(Counted::tunnelled, before.tunnelled, now.tunnelled, outcome.passedThrough);
+  add(Counted::farPushOut, before.farPushOuts, now.farPushOuts, outcome.passedThrough);
+  add(Counted::missed, before.misses, now.misses, {});
+  add(Counted::escaped, before.escapes, now.escapes, {});
+  add(Counted::overlapped, before.overlaps, now.overlaps, outcome.endedInside);
+  add(Counted::jittered, before.jitter, now.jitter, {});
+  add(Counted::snagged, before.snags, now.snags, {});
+  if (many) add(Counted::manyCollisions, 0, 1, {});
 }
 
 void Simulation::moveBatched(TickContext& ctx, double dt) {
@@ -300,8 +359,11 @@ void Simulation::moveBatched(TickContext& ctx, double dt) {
     ++counters_.moves;
     counters_.collisions += out.collisions.size();
     if (rules_) {
+      const Counters before = counters_;
       rules_->afterMove(ctx, i, batchMoves_[k].goal, out.collisions);
       syncWorld(i);
+      noteCounted(before, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
+                  out.collisions.size());
     }
   }
 }
@@ -341,6 +403,7 @@ void Simulation::record() {
 }
 
 void Simulation::restore(std::uint64_t t) {
+  events_.clear();
   const Snapshot& s = ring_[t % ring_.size()];
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];

@@ -87,12 +87,13 @@ struct LegendEntry {
   ImU32 colour;
   Swatch swatch;
   const char* label;
+  /// Only a recording's or a live game's items are drawn so (a category's colour): a scene's
+  /// legend leaves it out.
+  bool recordedOnly = false;
 };
 
-/// Every colour above that means something in the world view, in reading order. The entry for
-/// items drawn in their category's colour is there only `withCategories`: only a recording's
-/// picture has such items, and a legend line more would cut the panels of every other view.
-[[nodiscard]] std::span<const LegendEntry> legend(bool withCategories = false);
+/// Every colour above that means something in the world view, in reading order.
+[[nodiscard]] std::span<const LegendEntry> legend();
 
 }  // namespace tv::ui::palette
 

@@ -39,6 +39,9 @@ struct PictureOptions {
   double viewRect[4] = {0, 0, 0, 0};  ///< x, y, w, h for ViewKind::rect
   double renderHz = 0.0;
   int frames = 4;
+  /// --first-failure: the picture opens at the run's first failure (found by the debugger's
+  /// checks), its item traced, centred and zoomed, instead of at --tick / --frame.
+  bool firstFailure = false;
   std::vector<std::string> hide, show;
   /// One line on what the picture shows, drawn under a comparison's title (--caption TEXT).
   std::string caption;
@@ -50,5 +53,9 @@ struct PictureOptions {
 
 /// Throws UsageError naming the flag. Unknown `--NAME VALUE` pairs are kept as parameters.
 [[nodiscard]] PictureOptions parsePictureOptions(int argc, char** argv);
+
+/// What --list prints, the same in tv-render and tv-debugger: every scene with its category,
+/// description and parameters (as flags, with their defaults), then every mover.
+[[nodiscard]] std::string sceneAndMoverList();
 
 }  // namespace tv::ui

@@ -1,86 +1,92 @@
 #pragma once
-/// A session: one simulation, the body the debugger follows, and that body's recent moves as
-/// core traced them. The viewer and the headless renderer drive it the same way, so a picture
-/// from either shows the same ticks.
+/// The session: what the debugger shows, whatever the source. One panel or several in lockstep
+/// — a scene compared across movers, a recording beside its what-if re-runs — at one frame, one
+/// call and one traced item. The debugger and tv-render drive it the same way, so a picture
+/// from either shows the same thing.
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "tv/geometry.hpp"
-#include "tv/mover.hpp"
-#include "tv/sim/simulation.hpp"
-#include "tv/ui/overlays.hpp"
+#include "tv/ui/source.hpp"
 
 namespace tv::ui {
 
 class Session {
  public:
-  /// Traces body `selected` (if any) from tick 0. Throws tv::Error on a bad scene, parameters,
-  /// mover or body index (naming the value).
-  Session(const sim::SceneDef& scene, const sim::Params& params, MoverSpec mover,
-          std::optional<std::size_t> selected = 0);
+  /// One panel: `primary` (a scene with its mover, a recording as recorded).
+  explicit Session(std::unique_ptr<Source> primary);
+  /// Several panels in lockstep, the first the primary (all at frame 0).
+  explicit Session(std::vector<std::unique_ptr<Source>> panels);
 
-  /// One tick of the scene's dt; keeps the selected body's trace. Bodies are then drawn at
-  /// their physics state.
-  void tick();
-  /// One rendered frame of `seconds` through the fixed-step accumulator; returns ticks run.
-  /// Bodies are then drawn interpolated at the accumulator's alpha.
-  int frame(double seconds);
-  /// Runs forward until tick `t`. With `renderHz` > 0 it goes frame by frame at that rate and
-  /// stops on the first frame that reaches `t`, so the render position is interpolated as a
-  /// game at that refresh rate would draw it; with 0 it ticks (and draws at the physics state).
-  /// Throws tv::Error when `t` is behind the current tick, or when frames at `renderHz` run
-  /// more than one tick at a time and step over `t` (the session has then advanced past `t`).
-  /// With `stopAtEnd` it stops early at the end of a scene that ends before `t`.
-  void advanceTo(std::uint64_t t, double renderHz, bool stopAtEnd = false);
-  /// Back to tick 0, with new parameters and mover (nothing changes on a throw).
-  void restart(const sim::Params& params, MoverSpec mover);
+  // -- panels ------------------------------------------------------------------------------------
+  [[nodiscard]] std::size_t size() const { return panels_.size(); }
+  [[nodiscard]] Source& panel(std::size_t k) { return *panels_.at(k); }
+  [[nodiscard]] const Source& panel(std::size_t k) const { return *panels_.at(k); }
+  [[nodiscard]] Source& primary() { return *panels_.front(); }
+  [[nodiscard]] const Source& primary() const { return *panels_.front(); }
+  /// Panels in order, as raw pointers (for views that take a span).
+  [[nodiscard]] std::vector<Source*> panels();
+  /// More than one panel.
+  [[nodiscard]] bool comparing() const { return panels_.size() > 1; }
+  /// The panels after the first are open-loop re-runs of a recording (what-if).
+  [[nodiscard]] bool whatIf() const { return comparing() && panels_[1]->openLoop(); }
 
-  /// Follows another body (or none); its history starts afresh.
-  void select(std::optional<std::size_t> body);
-  [[nodiscard]] std::optional<std::size_t> selected() const { return selected_; }
+  /// Replaces every panel (the first is the primary) and brings them to frame `landOn` (as far
+  /// as they go), tracing the same item. Nothing changes on a throw.
+  void setPanels(std::vector<std::unique_ptr<Source>> panels, std::uint64_t landOn);
+  /// The primary and one re-run per mover of `others`, at the current frame: a scene compared
+  /// across movers (closed-loop), a recording beside its what-if runs (open-loop). Empty: the
+  /// primary alone. tv::Error (nothing changed) when a mover cannot run the source.
+  void compareWith(const std::vector<MoverSpec>& others);
+  /// The primary and `others` (re-runs the caller built, e.g. what-ifs with options of their
+  /// own), brought to the current frame, call and traced item.
+  void compareWith(std::vector<std::unique_ptr<Source>> others);
 
-  [[nodiscard]] const sim::Simulation& sim() const { return sim_; }
-  [[nodiscard]] sim::Simulation& sim() { return sim_; }
-  /// The selected body's last moves, oldest first (at most `historyLength`).
-  [[nodiscard]] std::span<const TracedMove> moves() const { return moves_; }
-  void setHistoryLength(std::size_t n);
-  [[nodiscard]] std::size_t historyLength() const { return history_; }
-  /// True after `frame` (render positions are interpolated), false after `tick`.
-  [[nodiscard]] bool interpolating() const { return interpolating_; }
+  // -- time --------------------------------------------------------------------------------------
+  [[nodiscard]] std::uint64_t frame() const { return primary().frame(); }
+  [[nodiscard]] std::uint64_t firstFrame() const { return primary().firstFrame(); }
+  /// The newest frame any panel can show now.
+  [[nodiscard]] std::uint64_t lastFrame() const;
+  /// Every panel has ended (nothing more can happen).
+  [[nodiscard]] bool ended() const;
+  /// Every panel to frame `f` (or as far as it goes), the call and trace re-done. With
+  /// `stopAtEnd` a scene that ends before `f` stops at its end: every panel is then brought to
+  /// the furthest frame any reached. Returns the frame reached.
+  std::uint64_t goTo(std::uint64_t f, bool stopAtEnd = false);
+  /// One frame of playback in every panel.
+  void play();
+  [[nodiscard]] double playSeconds() const { return primary().playSeconds(); }
 
-  /// The tick at which this session first failed (tunnelled, escaped, overlapped, jittered or
-  /// snagged), as seen by tick() and frame(); none while its counts are all 0.
-  [[nodiscard]] std::optional<std::uint64_t> firstFailureTick() const { return firstFailure_; }
+  /// The primary's calls in this frame.
+  [[nodiscard]] std::span<const CallInfo> calls() const { return primary().calls(); }
+  [[nodiscard]] std::optional<std::uint32_t> call() const { return primary().call(); }
+  /// Selects call `k` of the primary's frame in every panel (a recording's re-runs make the same
+  /// calls; a scene's other movers trace the same item in the same tick). None: the frame's end.
+  void selectCall(std::optional<std::uint32_t> k);
+  /// The next (+1) or previous (-1) call, across frames: past a frame's last call, the next
+  /// frame's first.
+  void stepCall(int direction);
 
-  /// What the world view draws now (valid until the next call that changes the session).
-  [[nodiscard]] WorldPicture picture();
+  // -- tracing -----------------------------------------------------------------------------------
+  /// Traces `item` (or none) in every panel.
+  void trace(std::optional<ItemId> item);
+  [[nodiscard]] std::optional<ItemId> traced() const { return primary().traced(); }
 
-  /// The world rect that frames the selected body's last move (start, goal, end and what it
-  /// hit), padded and at least `minSide` on each side; the scene's camera if none.
-  [[nodiscard]] Rect followView(double minSide) const;
+  /// Shows failure `f` in every panel: its frame, its item traced, the failing call selected (a
+  /// recording's own call; a scene's, that item's move in the tick). What every "go" to a
+  /// failure does to the session. Throws what goTo and trace throw.
+  void showFailure(const Failure& f);
 
-  /// "body 3", "solid 17": what an item of the world is, for the inspector.
-  [[nodiscard]] std::string describe(ItemId id) const;
+  /// The world rect that frames every panel's traced move.
+  [[nodiscard]] Rect followView() const;
 
  private:
-  void noteTrace();
-  void noteFailure();
-
-  sim::Simulation sim_;
-  std::optional<std::size_t> selected_;
-  std::vector<TracedMove> moves_;
-  std::size_t history_ = 8;
-  std::vector<Rect> renderRects_;
-  bool interpolating_ = false;
-  std::optional<std::uint64_t> firstFailure_;
+  std::vector<std::unique_ptr<Source>> panels_;
 };
-
-/// Tunnelled + escapes + overlaps + jitter + snags: the counts that mean a mover failed.
-[[nodiscard]] std::uint64_t failureCount(const sim::Counters& c);
 
 }  // namespace tv::ui

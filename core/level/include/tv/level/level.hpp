@@ -41,6 +41,7 @@ struct LevelBody {
   std::optional<double> speed;
   bool facingLeft = false;  ///< walkers and players: start walking left
   JumpScript jump;          ///< players only
+  std::string name;         ///< what the tools call it (a map object's name); empty: "body N"
 };
 
 /// A level as loaded from a file (parseTiledMap, parseSceneFile...), before it is a scene.
@@ -56,7 +57,10 @@ struct Level {
   std::optional<Rect> camera;  ///< what to frame; nullopt: everything in the level
   std::optional<std::string> mover;  ///< the mover the file suggests, if any
   std::vector<sim::Solid> solids;  ///< static solids, added to the world first, in order
-  std::vector<LevelBody> bodies;   ///< moving bodies, added after the solids, in order
+  /// What the tools call each solid (a map object's name), by index; missing or empty:
+  /// unnamed ("tile 12").
+  std::vector<std::string> solidNames;
+  std::vector<LevelBody> bodies;  ///< moving bodies, added after the solids, in order
   /// A built-in scene whose rules steer and count (a file exported by tv-run --export-scene),
   /// and the values of all its parameters; empty: the level's own rules (the motions above).
   std::string rules;

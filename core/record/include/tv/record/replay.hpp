@@ -230,6 +230,11 @@ class Replay {
   [[nodiscard]] bool cancelled() const;  ///< the last validate() was cancelled by its progress
   /// What-if (options().mover set): the whole run against the recording.
   [[nodiscard]] WhatIfReport whatIf(double farAway = 64.0);
+  /// The recorded run's own moves (with options().updatesAsMoves, its position-only updates
+  /// too) judged as whatIf judges them, with no other mover: only recordedTunnelled,
+  /// recordedOverlapping and recordedFailures are filled. With or without options().mover. What
+  /// a debugger lists as a recording's failures.
+  [[nodiscard]] WhatIfReport checkRecorded();
 
   struct Impl;  // opaque: core/record/src/replay_impl.hpp
 

@@ -45,6 +45,11 @@ struct SceneSetup {
   std::vector<Body> bodies;   ///< then these (their `item` is filled in by the simulation)
   Vec2 gravity;               ///< px/s², applied to bodies with `falls`
   std::shared_ptr<const SceneRules> rules;  ///< null: plain movement, nothing counted
+  /// What the tools call each solid (a map object's name), by index; empty or missing entries
+  /// are unnamed ("wall tile 12").
+  std::vector<std::string> solidNames;
+  /// What the tools call each body, by index, as `solidNames`; unnamed: "body 3".
+  std::vector<std::string> bodyNames;
 };
 
 /// What the rules may see and change during a tick.
@@ -99,6 +104,14 @@ struct SceneDef {
   std::string category;           ///< "Tunnelling", "Resting", "Games"...
   std::string name;               ///< unique, lower-case-with-dashes
   std::string description;        ///< one line
+  /// How the tools read its `misses` counter: true when a miss is a failure (a shot and a target
+  /// that should have met did not), false when it is an expected near thing (an exact graze),
+  /// which the tools call `missesWord` and never count against a mover.
+  bool missesFail = false;
+  std::string missesWord = "misses";  ///< the tools' word for the counter ("grazes")
+  /// What the tools call a solid of each tag (index = tag; "floor tile", "wall tile"); a tag
+  /// past the end is a "solid".
+  std::vector<std::string> tagNames;
   std::vector<ParamSpec> params;  ///< every common parameter (see `param::`) plus its own
   /// The world rect to frame, for given parameters (cheap: does not build the scene).
   std::function<Rect(const Params&)> camera;

@@ -20,6 +20,8 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "tv/batch.hpp"
@@ -41,6 +43,32 @@ struct SimConfig {
   /// Longest frame `frame()` counts, s (the spiral-of-death guard); raised to dt when dt is
   /// longer. Finite and > 0. Default 0.25.
   double maxFrameTime = 0.25;
+};
+
+/// A counter the scene's rules raised, and whose move raised it.
+enum class Counted : std::uint8_t {
+  tunnelled,       ///< Counters::tunnelled
+  farPushOut,      ///< Counters::farPushOuts
+  missed,          ///< Counters::misses
+  escaped,         ///< Counters::escapes
+  overlapped,      ///< Counters::overlaps
+  jittered,        ///< Counters::jitter
+  snagged,         ///< Counters::snags
+  manyCollisions,  ///< not a counter: a move reported more than `manyCollisions()` collisions
+};
+
+/// Something counted in a tick: the tools list these to go straight to what failed.
+struct TickEvent {
+  std::uint64_t tick = 0;  ///< the tick's number once it has run (ticks() after it)
+  /// The body whose move the rules were judging when they counted (afterMove); -1 when counted
+  /// after every body moved (afterTick), which is no one body's.
+  std::int64_t body = -1;
+  Counted what = Counted::tunnelled;  ///< which counter rose
+  std::uint64_t count = 1;  ///< how much the counter rose
+  /// What the move passed through (tunnelled, farPushOut) or ended inside (overlapped), as
+  /// tv::judgeMove finds it with the simulation's filter; invalid when unknown or not asked.
+  ItemId other;
+  std::size_t collisions = 0;  ///< collisions the move reported
 };
 
 /// What tracing saw (not part of the state: tracing never changes results).
@@ -138,6 +166,17 @@ class Simulation {
   [[nodiscard]] double dt() const { return dt_; }
   /// What the tools frame, at the current parameters.
   [[nodiscard]] Rect camera() const { return scene_.camera(params_); }
+  /// What the tools call solid `i` and body `i`: the scene's own name for it (a map object's),
+  /// else empty.
+  [[nodiscard]] std::string_view solidName(std::size_t i) const {
+    return i < solidNames_.size() ? std::string_view(solidNames_[i]) : std::string_view();
+  }
+  /// What the tools call body `i`, as solidName.
+  [[nodiscard]] std::string_view bodyName(std::size_t i) const {
+    return i < bodyNames_.size() ? std::string_view(bodyNames_[i]) : std::string_view();
+  }
+  /// The solid whose item this is (solids are added first, in order), if it is one.
+  [[nodiscard]] std::optional<std::size_t> solidOf(ItemId id) const;
 
   // -- tracing -------------------------------------------------------------------------------
   /// Records a MoveTrace of body `i`'s move every tick (nullopt: off, the default). Tracing
@@ -148,6 +187,15 @@ class Simulation {
   [[nodiscard]] const MoveTrace* lastTrace() const { return traceValid_ ? &trace_ : nullptr; }
   /// Totals over every traced move since the last restart.
   [[nodiscard]] const TraceStats& traceStats() const { return traceStats_; }
+
+  // -- what was counted ----------------------------------------------------------------------
+  /// What the rules counted in the last tick, body by body, in the order it happened (empty
+  /// after a seek, a step back or a restart). Not part of the state; costs a few compares a move.
+  [[nodiscard]] std::span<const TickEvent> events() const { return events_; }
+  /// Moves reporting more collisions than `n` are listed in events() (0, the default: none).
+  void setManyCollisions(std::size_t n) { manyCollisions_ = n; }
+  /// The threshold setManyCollisions set (0: off).
+  [[nodiscard]] std::size_t manyCollisions() const { return manyCollisions_; }
 
  private:
   struct BodyState {
@@ -174,6 +222,8 @@ class Simulation {
   void restore(std::uint64_t t);
   void syncWorld(std::size_t i);
   void noteTrace();
+  void noteCounted(const Counters& before, std::int64_t body, const Rect& start,
+                   std::size_t collisions);
   [[nodiscard]] ResponseId respond(ItemId item, ItemId other) const;
   [[nodiscard]] TickContext context(double dt);
 
@@ -189,6 +239,8 @@ class Simulation {
 
   std::vector<Solid> solids_;
   std::vector<Body> bodies_;
+  std::vector<std::string> solidNames_, bodyNames_;
+  std::vector<ItemId> solidItems_;
   Vec2 gravity_;
   std::shared_ptr<const SceneRules> rules_;
   std::vector<std::int32_t> bodyBySlot_;
@@ -208,6 +260,8 @@ class Simulation {
   bool traceValid_ = false;
   TraceStats traceStats_;
 
+  std::vector<TickEvent> events_;
+  std::size_t manyCollisions_ = 0;
   std::vector<BatchMove> batchMoves_;
   std::vector<ItemId> riders_;  // every body that is not a moving solid
   std::vector<std::size_t> batchBodies_;

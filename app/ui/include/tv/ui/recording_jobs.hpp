@@ -1,8 +1,8 @@
 #pragma once
-// Whole-recording checks that run beside the view, each on its own Replay in its own thread,
-// so playback goes on while they work: validation (the first divergence, with progress) and a
-// what-if run under another mover (the report). Screenshots run them to the end first, so the
-// marks never depend on how fast the machine is.
+/// Whole-recording checks that run beside the view, each on its own Replay in its own thread,
+/// so playback goes on while they work: validation (the first divergence, with progress) and a
+/// what-if run under another mover (the report). Screenshots run them to the end first, so the
+/// marks never depend on how fast the machine is.
 
 #include <atomic>
 #include <cstdint>
@@ -11,12 +11,13 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "tv/record/replay.hpp"
+#include "tv/ui/replay_source.hpp"
 
-namespace tv::viewer {
+namespace tv::ui {
 
-// tv::Divergence (a replay's) is named in full: tv::viewer::Divergence is the scene look-ahead.
 class ValidationJob {
  public:
   ValidationJob() = default;
@@ -24,8 +25,8 @@ class ValidationJob {
   ValidationJob(const ValidationJob&) = delete;
   ValidationJob& operator=(const ValidationJob&) = delete;
 
-  /// Validates the file at `path` from the start (stops any run before). `wait`: in this thread.
-  void start(const std::string& path, bool wait);
+  /// Validates the recording from the start (stops any run before). `wait`: in this thread.
+  void start(const ReplaySource::Origin& origin, bool wait);
   void stop();
 
   [[nodiscard]] bool running() const { return running_.load(); }
@@ -34,17 +35,21 @@ class ValidationJob {
   [[nodiscard]] std::uint64_t progress() const { return progress_.load(); }
   /// The first divergence, once done (none: the replay matched the recording).
   [[nodiscard]] std::optional<tv::Divergence> divergence() const;
+  /// The recorded run's own moves that tunnelled or ended inside a solid (Replay::checkRecorded),
+  /// once done.
+  [[nodiscard]] std::vector<MoveDifference> recordedFailures() const;
   /// Why it could not run (a file that no longer opens), once done.
   [[nodiscard]] std::string error() const;
 
  private:
-  void run(const std::string& path);
+  void run(const ReplaySource::Origin& origin);
 
   std::thread thread_;
   std::atomic<bool> running_{false}, done_{false}, cancel_{false};
   std::atomic<std::uint64_t> progress_{0};
   mutable std::mutex mutex_;
   std::optional<tv::Divergence> divergence_;
+  std::vector<MoveDifference> recordedFailures_;
   std::string error_;
 };
 
@@ -55,8 +60,9 @@ class WhatIfJob {
   WhatIfJob(const WhatIfJob&) = delete;
   WhatIfJob& operator=(const WhatIfJob&) = delete;
 
-  /// Re-runs the file at `path` with `options.mover`, comparing with the recording.
-  void start(const std::string& path, const ReplayOptions& options, double farAway, bool wait);
+  /// Re-runs the recording with `options.mover`, comparing with what it recorded.
+  void start(const ReplaySource::Origin& origin, const ReplayOptions& options, double farAway,
+             bool wait);
   [[nodiscard]] bool running() const { return running_.load(); }
   [[nodiscard]] bool done() const { return done_.load(); }
   /// The report, once done.
@@ -73,4 +79,4 @@ class WhatIfJob {
   std::string error_;
 };
 
-}  // namespace tv::viewer
+}  // namespace tv::ui

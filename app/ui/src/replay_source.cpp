@@ -1,4 +1,7 @@
-#include "tv/ui/recording_session.hpp"
+// A recording as a Source: the replay, the frame and call on screen, the traced item's moves.
+#include "tv/ui/replay_source.hpp"
+
+#include <filesystem>
 
 #include <algorithm>
 #include <limits>
@@ -7,12 +10,24 @@
 
 namespace tv::ui {
 
-bool tracesAMove(CallKind k) {
-  return isOneSweep(k);
+std::unique_ptr<ReplaySource> ReplaySource::open(const std::string& path, ReplayOptions options) {
+  // The debugger opens what can be opened; the bad chunk's error is a warning of the replay.
+  options.tolerant = true;
+  std::string name = std::filesystem::path(path).filename().string();
+  if (options.mover) name += " with " + options.mover->name();
+  return std::make_unique<ReplaySource>(Replay::open(path, options), name, Origin{path, nullptr});
 }
 
-RecordingSession::RecordingSession(Replay replay, std::string name)
-    : replay_(std::move(replay)), name_(std::move(name)) {
+std::unique_ptr<ReplaySource> ReplaySource::fromBytes(
+    std::shared_ptr<const std::vector<std::uint8_t>> bytes, std::string name, SourceKind kind,
+    ReplayOptions options) {
+  options.tolerant = true;
+  return std::make_unique<ReplaySource>(Replay::fromBytes(*bytes, options), std::move(name),
+                                        Origin{{}, bytes}, kind);
+}
+
+ReplaySource::ReplaySource(Replay replay, std::string name, Origin origin, SourceKind kind)
+    : replay_(std::move(replay)), name_(std::move(name)), origin_(std::move(origin)), kind_(kind) {
   const auto items = replay_.items();
   for (std::size_t i = 0; i < items.size(); ++i) recorded_.emplace(items[i].id, i);
   // The level's geometry: the category that more than half of the items that never move have
@@ -30,12 +45,12 @@ RecordingSession::RecordingSession(Replay replay, std::string name)
   goTo(0);
 }
 
-std::uint64_t RecordingSession::lastFrame() const {
+std::uint64_t ReplaySource::lastFrame() const {
   const std::uint64_t n = replay_.frames();
   return n > 0 ? n - 1 : 0;
 }
 
-void RecordingSession::goTo(std::uint64_t f) {
+void ReplaySource::goTo(std::uint64_t f) {
   f = std::min(f, lastFrame());
   // Playing forward: the replay already stands at the end of the frame on screen, so the next
   // frame is only its own calls, not a seek and the history again (a crowd's frames are big).
@@ -50,7 +65,7 @@ void RecordingSession::goTo(std::uint64_t f) {
   trimHistory();
 }
 
-void RecordingSession::selectCall(std::optional<std::uint32_t> k) {
+void ReplaySource::selectCall(std::optional<std::uint32_t> k) {
   if (k && *k >= calls_.size()) return;
   call_ = k;
   // The call's item becomes the traced one, so its earlier moves trail behind the call's.
@@ -58,12 +73,12 @@ void RecordingSession::selectCall(std::optional<std::uint32_t> k) {
   rebuild();
 }
 
-void RecordingSession::select(std::optional<ItemId> item) {
+void ReplaySource::trace(std::optional<ItemId> item) {
   selected_ = item;
   rebuild();
 }
 
-void RecordingSession::rebuild() {
+void ReplaySource::rebuild() {
   moves_.clear();
   callTraced_ = false;
   divergence_.reset();
@@ -78,7 +93,7 @@ void RecordingSession::rebuild() {
   primed_ = !call_;
 }
 
-void RecordingSession::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
+void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
                                  std::size_t end) {
   // Stepping a frame's last call leaves the replay at the next frame's start (or at the end of
   // the one it stepped): either is the same world, but only the first can be stepped on.
@@ -99,7 +114,7 @@ void RecordingSession::stepFrame(std::uint64_t f, const std::vector<CallInfo>& h
   }
 }
 
-void RecordingSession::trimHistory() {
+void ReplaySource::trimHistory() {
   // The history covers the last few frames, and at most so many moves, oldest dropped first.
   constexpr std::size_t kKeep = 16;
   const std::uint64_t from = frame_ > history_ ? frame_ - history_ : 0;
@@ -109,50 +124,29 @@ void RecordingSession::trimHistory() {
   moves_.erase(moves_.begin(), moves_.begin() + static_cast<std::ptrdiff_t>(drop));
 }
 
-bool RecordingSession::traces(const CallInfo& c) const {
+bool ReplaySource::traces(const CallInfo& c) const {
   if (tracesAMove(c.kind)) return true;
   const ReplayOptions& o = replay_.options();
   return c.kind == CallKind::update && o.mover && o.updatesAsMoves;
 }
 
-const MoveTrace* RecordingSession::callTrace() const {
+const MoveTrace* ReplaySource::callTrace() const {
   return callTraced_ && !moves_.empty() ? &moves_.back().trace : nullptr;
 }
 
-std::optional<ItemId> RecordingSession::findLabel(std::string_view label) const {
+std::optional<ItemId> ReplaySource::findLabel(std::string_view label) const {
   for (const RecordedItem& i : replay_.items()) {
     if (i.label == label) return i.id;
   }
   return std::nullopt;
 }
 
-bool RecordingSession::moves(ItemId id) const {
+bool ReplaySource::moves(ItemId id) const {
   const auto at = recorded_.find(id);
   return at != recorded_.end() && replay_.items()[at->second].moves > 0;
 }
 
-std::optional<ItemId> RecordingSession::itemAt(Vec2 p) const {
-  std::optional<ItemId> best;
-  bool bestMoves = false;
-  double bestArea = std::numeric_limits<double>::infinity();
-  world().forEachItem([&](ItemId id, const Rect& r) {
-    if (!contains(r, p)) return;
-    const bool m = moves(id);
-    const double area = r.w * r.h;
-    if (!best || (m && !bestMoves) || (m == bestMoves && area < bestArea)) {
-      best = id;
-      bestMoves = m;
-      bestArea = area;
-    }
-  });
-  return best;
-}
-
-bool RecordingSession::pictureHasCategories() const {
-  return std::any_of(bodyFills_.begin(), bodyFills_.end(), [](ImU32 f) { return f != 0; });
-}
-
-WorldPicture RecordingSession::picture() {
+WorldPicture ReplaySource::picture() {
   solids_.clear();
   bodies_.clear();
   bodyFills_.clear();
@@ -186,7 +180,7 @@ WorldPicture RecordingSession::picture() {
   return p;
 }
 
-Rect RecordingSession::bounds() const {
+Rect ReplaySource::home() const {
   std::optional<Rect> box;
   world().forEachItem([&](ItemId, const Rect& r) { box = box ? unite(*box, r) : r; });
   if (!box) return {0, 0, 256, 256};
@@ -194,7 +188,7 @@ Rect RecordingSession::bounds() const {
   return {box->x - pad, box->y - pad, box->w + 2 * pad, box->h + 2 * pad};
 }
 
-double RecordingSession::typicalSize() const {
+double ReplaySource::typicalSize() const {
   double best = std::numeric_limits<double>::infinity();
   world().forEachItem([&](ItemId id, const Rect& r) {
     if (moves(id)) best = std::min({best, r.w, r.h});
@@ -205,28 +199,58 @@ double RecordingSession::typicalSize() const {
   return best == std::numeric_limits<double>::infinity() ? 16.0 : best;
 }
 
-Rect RecordingSession::followView(double minSide) const {
-  Rect box;
-  if (!moves_.empty()) {
-    // The last move only: earlier ones trail off the edge rather than shrink the action.
-    const MoveTrace& t = moves_.back().trace;
-    box = unite(t.start, t.start.at(t.goal));
-    box = unite(box, t.start.at(t.final));
-    for (const Collision& c : t.hits) box = unite(box, c.otherRect);
-  } else if (selected_ && world().has(*selected_)) {
-    box = world().rect(*selected_);
-  } else {
-    return bounds();
-  }
-  const double pad = std::max(box.w, box.h) * 0.25;
-  box = {box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad};
-  const Vec2 c = box.center();
-  const double w = std::max(box.w, minSide), h = std::max(box.h, minSide);
-  return {c.x - w * 0.5, c.y - h * 0.5, w, h};
+
+double ReplaySource::followMinSide() const {
+  return std::max(8.0 * typicalSize(), 64.0);
 }
 
-std::string RecordingSession::describe(ItemId id) const {
-  return replay_.label(id);
+std::string ReplaySource::moverName() const {
+  const ReplayOptions& o = replay_.options();
+  return o.mover ? o.mover->name() : std::string("recorded");
+}
+
+std::unique_ptr<ReplaySource> ReplaySource::whatIf(const MoverSpec& mover,
+                                                   bool updatesAsMoves) const {
+  ReplayOptions o;
+  o.mover = mover;
+  o.updatesAsMoves = updatesAsMoves;
+  o.tolerant = true;
+  const std::string base = name_.substr(0, name_.find(" with "));
+  std::unique_ptr<ReplaySource> s;
+  if (origin_.bytes) {
+    s = fromBytes(origin_.bytes, base + " with " + mover.name(), kind_, o);
+  } else {
+    s = std::make_unique<ReplaySource>(Replay::open(origin_.path, o), base + " with " + mover.name(),
+                                       origin_, kind_);
+  }
+  return s;
+}
+
+std::unique_ptr<Source> ReplaySource::rerun(const MoverSpec& mover) const {
+  return whatIf(mover, replay_.options().updatesAsMoves);
+}
+
+std::vector<ItemRow> ReplaySource::items() const {
+  std::vector<ItemRow> rows;
+  rows.reserve(replay_.items().size());
+  for (const RecordedItem& i : replay_.items()) {
+    ItemRow r;
+    r.id = i.id;
+    r.name = i.label;
+    r.category = i.category;
+    r.moves = i.moves > 0;
+    r.moveCount = i.moves;
+    r.hits = i.hits;
+    r.firstFrame = i.firstFrame;
+    r.lastFrame = i.lastFrame;
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+std::vector<std::string> ReplaySource::notes() const {
+  const auto w = replay_.warnings();
+  return {w.begin(), w.end()};
 }
 
 }  // namespace tv::ui

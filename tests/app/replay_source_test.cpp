@@ -1,4 +1,4 @@
-// A recording in the debugger: frames and calls, the traced item, clicking an item, and the
+// A recording as the debugger's source: frames and calls, the traced item, clicking an item, and the
 // trace shown for a call being the one core made while the replay re-ran it.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "tv/record/recorder.hpp"
 #include "tv/record/replay.hpp"
 #include "tv/ui/palette.hpp"
-#include "tv/ui/recording_session.hpp"
+#include "tv/ui/replay_source.hpp"
 
 namespace tv::ui {
 namespace {
@@ -61,12 +61,12 @@ Game record(int frames) {
   return g;
 }
 
-RecordingSession open(const Game& g) {
-  return RecordingSession(Replay::fromBytes(g.bytes), "game.tvrec");
+ReplaySource open(const Game& g) {
+  return ReplaySource(Replay::fromBytes(g.bytes), "game.tvrec");
 }
 
 // The player's move in the frame on screen (frame 0 also holds the adds and labels).
-std::uint32_t moveCall(const RecordingSession& s) {
+std::uint32_t moveCall(const ReplaySource& s) {
   for (const CallInfo& c : s.calls()) {
     if (c.kind == CallKind::move) return c.index;
   }
@@ -74,9 +74,9 @@ std::uint32_t moveCall(const RecordingSession& s) {
   return 0;
 }
 
-TEST(RecordingSession, ShowsAFrameAsItEndedWithItsCallsListed) {
+TEST(ReplaySource, ShowsAFrameAsItEndedWithItsCallsListed) {
   const Game g = record(6);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   s.goTo(3);
   EXPECT_EQ(s.frame(), 3u);
   EXPECT_FALSE(s.call());
@@ -86,20 +86,20 @@ TEST(RecordingSession, ShowsAFrameAsItEndedWithItsCallsListed) {
   EXPECT_EQ(s.world().rect(g.player).position(), g.ends[3]);
 }
 
-TEST(RecordingSession, GoingPastTheLastFrameShowsTheLast) {
+TEST(ReplaySource, GoingPastTheLastFrameShowsTheLast) {
   const Game g = record(4);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   s.goTo(1000);
   EXPECT_EQ(s.frame(), s.lastFrame());
 }
 
-TEST(RecordingSession, SelectingACallShowsTheWorldJustAfterItAndTracesItsItem) {
+TEST(ReplaySource, SelectingACallShowsTheWorldJustAfterItAndTracesItsItem) {
   const Game g = record(6);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   s.goTo(4);
   s.selectCall(moveCall(s));
   ASSERT_TRUE(s.call());
-  EXPECT_EQ(s.selected(), g.player);  // the call's item is traced
+  EXPECT_EQ(s.traced(), g.player);  // the call's item is traced
   const MoveTrace* t = s.callTrace();
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(t->item, g.player);
@@ -113,9 +113,9 @@ TEST(RecordingSession, SelectingACallShowsTheWorldJustAfterItAndTracesItsItem) {
 
 // The debugger never recomputes a collision: what it shows is the trace core filled while the
 // replay re-ran the call, which is the trace the game's own move made.
-TEST(RecordingSession, ACallsTraceIsTheOneTheGamesMoveMade) {
+TEST(ReplaySource, ACallsTraceIsTheOneTheGamesMoveMade) {
   const Game g = record(12);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   for (std::uint64_t f = 0; f < 12; ++f) {
     s.goTo(f);
     s.selectCall(moveCall(s));
@@ -136,9 +136,9 @@ TEST(RecordingSession, ACallsTraceIsTheOneTheGamesMoveMade) {
 
 // The game's filter passed through the ghost wall; the replay cannot call it, so the answer it
 // gave comes from the recording, and the trace shows it.
-TEST(RecordingSession, TheTraceCarriesTheFiltersRecordedAnswers) {
+TEST(ReplaySource, TheTraceCarriesTheFiltersRecordedAnswers) {
   const Game g = record(12);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   bool sawGhostIgnored = false, sawWallSlide = false;
   for (std::uint64_t f = 0; f < 12; ++f) {
     s.goTo(f);
@@ -155,9 +155,9 @@ TEST(RecordingSession, TheTraceCarriesTheFiltersRecordedAnswers) {
   EXPECT_EQ(s.world().rect(g.player).right(), 64.0);
 }
 
-TEST(RecordingSession, AQueryCallHasNoMoveTrace) {
+TEST(ReplaySource, AQueryCallHasNoMoveTrace) {
   const Game g = record(3);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   s.goTo(1);
   s.selectCall(1);
   EXPECT_EQ(s.callTrace(), nullptr);
@@ -165,9 +165,9 @@ TEST(RecordingSession, AQueryCallHasNoMoveTrace) {
   EXPECT_EQ(s.call(), std::optional<std::uint32_t>(1));
 }
 
-TEST(RecordingSession, ClickingPicksTheMovingItemBeforeTheTileBehindIt) {
+TEST(ReplaySource, ClickingPicksTheMovingItemBeforeTheTileBehindIt) {
   const Game g = record(2);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   s.goTo(0);
   const Rect p = s.world().rect(g.player);
   EXPECT_EQ(s.itemAt(p.center()), g.player);
@@ -177,37 +177,37 @@ TEST(RecordingSession, ClickingPicksTheMovingItemBeforeTheTileBehindIt) {
   EXPECT_FALSE(s.moves(g.wall));
 }
 
-TEST(RecordingSession, NamesItemsByTheirLabels) {
+TEST(ReplaySource, NamesItemsByTheirLabels) {
   const Game g = record(2);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   EXPECT_EQ(s.findLabel("player"), g.player);
   EXPECT_FALSE(s.findLabel("nobody"));
   EXPECT_EQ(s.describe(g.wall), "wall");
 }
 
-TEST(RecordingSession, TracingAnotherItemKeepsTheFrameAndCall) {
+TEST(ReplaySource, TracingAnotherItemKeepsTheFrameAndCall) {
   const Game g = record(6);
-  RecordingSession s = open(g);
+  ReplaySource s = open(g);
   s.goTo(5);
-  s.select(g.player);
+  s.trace(g.player);
   EXPECT_EQ(s.frame(), 5u);
   ASSERT_FALSE(s.history().empty());
   EXPECT_EQ(s.history().back().tick, 5u);
-  s.select(g.wall);  // never moves: nothing to trace
+  s.trace(g.wall);  // never moves: nothing to trace
   EXPECT_TRUE(s.history().empty());
   EXPECT_FALSE(s.divergence());
 }
 
 // Playing forward steps only the new frame's calls; it must show exactly what seeking to that
 // frame shows (the same world, by state hash, and the same traced moves).
-TEST(RecordingSession, PlayingForwardShowsWhatSeekingShows) {
+TEST(ReplaySource, PlayingForwardShowsWhatSeekingShows) {
   const Game g = record(30);
-  RecordingSession played = open(g);
-  played.select(g.player);
+  ReplaySource played = open(g);
+  played.trace(g.player);
   for (std::uint64_t f = 0; f < 30; ++f) {
     played.goTo(f);
-    RecordingSession sought = open(g);
-    sought.select(g.player);
+    ReplaySource sought = open(g);
+    sought.trace(g.player);
     sought.goTo(f);
     ASSERT_EQ(played.world().stateHash(), sought.world().stateHash()) << "frame " << f;
     ASSERT_EQ(played.history().size(), sought.history().size()) << "frame " << f;
@@ -223,7 +223,7 @@ TEST(RecordingSession, PlayingForwardShowsWhatSeekingShows) {
 //
 //   [g]          [p]-->        g: "guard 1", category Guardian, never moves
 //   ================           tiles, category "tile" (most of what never moves): solids
-TEST(RecordingSession, DrawsAnItemThatNeverMovesInItsCategorysColourUnlessItIsTheLevel) {
+TEST(ReplaySource, DrawsAnItemThatNeverMovesInItsCategorysColourUnlessItIsTheLevel) {
   World w(16);
   Recorder rec;
   w.attach(rec);
@@ -238,7 +238,7 @@ TEST(RecordingSession, DrawsAnItemThatNeverMovesInItsCategorysColourUnlessItIsTh
   }
   w.detach();
   rec.close();
-  RecordingSession s(Replay::fromBytes(rec.bytes()), "game.tvrec");
+  ReplaySource s(Replay::fromBytes(rec.bytes()), "game.tvrec");
   s.goTo(2);
   const WorldPicture p = s.picture();
   EXPECT_EQ(p.solids.size(), 8u);

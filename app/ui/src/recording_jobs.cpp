@@ -1,10 +1,10 @@
-#include "recording_jobs.hpp"
+#include "tv/ui/recording_jobs.hpp"
 
 #include <exception>
 
 #include "tv/app/user_message.hpp"
 
-namespace tv::viewer {
+namespace tv::ui {
 
 // -- validation --------------------------------------------------------------------------------
 
@@ -18,36 +18,48 @@ void ValidationJob::stop() {
   cancel_ = false;
 }
 
-void ValidationJob::start(const std::string& path, bool wait) {
+namespace {
+
+Replay openOrigin(const ReplaySource::Origin& origin, const ReplayOptions& options) {
+  return origin.bytes ? Replay::fromBytes(*origin.bytes, options) : Replay::open(origin.path, options);
+}
+
+}  // namespace
+
+void ValidationJob::start(const ReplaySource::Origin& origin, bool wait) {
   stop();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     divergence_.reset();
+    recordedFailures_.clear();
     error_.clear();
   }
   progress_ = 0;
   done_ = false;
   running_ = true;
   if (wait) {
-    run(path);
+    run(origin);
   } else {
-    thread_ = std::thread([this, path] { run(path); });
+    thread_ = std::thread([this, origin] { run(origin); });
   }
 }
 
-void ValidationJob::run(const std::string& path) {
+void ValidationJob::run(const ReplaySource::Origin& origin) {
   std::optional<tv::Divergence> d;
+  std::vector<MoveDifference> failures;
   std::string error;
   bool cancelled = false;
   try {
     ReplayOptions o;
     o.tolerant = true;
-    Replay replay = Replay::open(path, o);
+    Replay replay = openOrigin(origin, o);
     d = replay.validate([this](std::uint64_t frame) {
       progress_ = frame;
       return !cancel_.load();
     });
     cancelled = replay.cancelled();
+    // Then the game's own moves, judged: what the Failures tab lists for the recorded run.
+    if (!cancelled && !cancel_.load()) failures = replay.checkRecorded().recordedFailures;
     if (!cancelled) progress_ = replay.frames();
   } catch (const std::exception& e) {
     error = app::userMessage(e);
@@ -55,6 +67,7 @@ void ValidationJob::run(const std::string& path) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     divergence_ = std::move(d);
+    recordedFailures_ = std::move(failures);
     error_ = std::move(error);
   }
   running_ = false;
@@ -64,6 +77,11 @@ void ValidationJob::run(const std::string& path) {
 std::optional<tv::Divergence> ValidationJob::divergence() const {
   const std::lock_guard<std::mutex> lock(mutex_);
   return divergence_;
+}
+
+std::vector<MoveDifference> ValidationJob::recordedFailures() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return recordedFailures_;
 }
 
 std::string ValidationJob::error() const {
@@ -83,8 +101,8 @@ void WhatIfJob::join() {
   if (thread_.joinable()) thread_.join();
 }
 
-void WhatIfJob::start(const std::string& path, const ReplayOptions& options, double farAway,
-                      bool wait) {
+void WhatIfJob::start(const ReplaySource::Origin& origin, const ReplayOptions& options,
+                      double farAway, bool wait) {
   join();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -93,11 +111,11 @@ void WhatIfJob::start(const std::string& path, const ReplayOptions& options, dou
   }
   done_ = false;
   running_ = true;
-  auto work = [this, path, options, farAway] {
+  auto work = [this, origin, options, farAway] {
     std::optional<WhatIfReport> report;
     std::string error;
     try {
-      Replay replay = Replay::open(path, options);
+      Replay replay = openOrigin(origin, options);
       report = replay.whatIf(farAway);
     } catch (const std::exception& e) {
       error = app::userMessage(e);
@@ -127,4 +145,4 @@ std::string WhatIfJob::error() const {
   return error_;
 }
 
-}  // namespace tv::viewer
+}  // namespace tv::ui
