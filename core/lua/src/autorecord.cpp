@@ -6,22 +6,33 @@
 // `love.update` and `love.draw`), and every file is closed when the game quits or its error
 // handler runs; elsewhere `tunnelvision.frame()` marks one, and a file is closed when its world
 // is collected or the interpreter exits.
+//
+// Watching a game live without touching its code: `TV_LIVE=HOST:PORT love mygame` streams the
+// world the game made last to a receiver listening there (tv-debugger --listen, tv-replay
+// --listen), which may pause the game and step it a frame at a time: LÖVE's step then waits in
+// its frame mark. One stream per game, because a receiver watches one game: a world made while
+// another streams takes the stream over — a level reloaded is a new run in the debugger — and
+// the older world's recording ends (its file too, with TV_RECORD). The game never waits for a
+// receiver that is not there (tv/record/live.hpp).
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "boundary.hpp"
 #include "lua_world.hpp"
+#include "tv/record/live.hpp"
 
 namespace tvlua {
 namespace {
 
-constexpr const char* kState = "tunnelvision.autorecord";  // registry: {path, count, worlds, all}
+// registry: {path, count, live, hooked, env, worlds, all, streaming}
+constexpr const char* kState = "tunnelvision.autorecord";
 
 // The registry table of this module's recording state, created on first use.
 void pushState(lua_State* L) {
@@ -29,7 +40,8 @@ void pushState(lua_State* L) {
   if (lua_istable(L, -1)) return;
   lua_pop(L, 1);
   lua_createtable(L, 0, 4);
-  for (const char* weak : {"worlds", "all"}) {  // worlds recording automatically; every world
+  // Worlds recording automatically; every world; the one streaming live (at most one).
+  for (const char* weak : {"worlds", "all", "streaming"}) {
     lua_newtable(L);
     lua_createtable(L, 0, 1);
     lua_pushliteral(L, "k");
@@ -55,20 +67,47 @@ std::string numbered(const std::string& path, int n) {
   return out;
 }
 
-// Starts recording the world at `worldIdx` into the next file; false (and a message on top of
-// the stack) when the file cannot be written.
-bool startAuto(lua_State* L, int worldIdx, LuaWorld& w, int state) {
+// state[field] = a fresh weak-keyed table.
+void resetSet(lua_State* L, int state, const char* field) {
+  lua_newtable(L);
+  lua_createtable(L, 0, 1);
+  lua_pushliteral(L, "k");
+  lua_setfield(L, -2, "__mode");
+  lua_setmetatable(L, -2);
+  lua_setfield(L, state, field);
+}
+
+// Starts recording the world at `worldIdx` automatically: into the next file when a path is
+// set (TV_RECORD, `record`), and streaming to the TV_LIVE receiver when `stream` is true. False
+// (and a message on top of the stack) when the file cannot be written or the stream not made.
+bool startAuto(lua_State* L, int worldIdx, LuaWorld& w, int state, bool stream) {
   lua_getfield(L, state, "path");
-  const std::string path = lua_tostring(L, -1);
+  const bool toFile = lua_isstring(L, -1) != 0;
+  const std::string path = toFile ? lua_tostring(L, -1) : "";
   lua_pop(L, 1);
+  lua_getfield(L, state, "live");
+  const std::string live = stream && lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+  lua_pop(L, 1);
+  if (!toFile && live.empty()) return true;  // nothing asked
   lua_getfield(L, state, "count");
-  const int n = static_cast<int>(lua_tonumber(L, -1)) + 1;
+  const int n = toFile ? static_cast<int>(lua_tonumber(L, -1)) + 1 : 0;
   lua_pop(L, 1);
   std::string error;
   {
-    const std::string file = numbered(path, n);
+    const std::string file = toFile ? numbered(path, n) : "";
     try {
-      w.recorder = std::make_unique<tv::Recorder>(file);
+      std::optional<tv::LiveOptions> options;
+      if (!live.empty()) {
+        options.emplace();
+        options->address = live;
+        options->control = true;  // the receiver may pause the game at LÖVE's frame marks
+      }
+      if (toFile) {
+        w.recorder = std::make_unique<tv::Recorder>(file);
+        if (options) w.recorder->stream(*options);
+      } else {
+        w.recorder = std::make_unique<tv::Recorder>(*options);  // copies nothing while nobody listens
+      }
       w.world.attach(*w.recorder);
     } catch (const std::exception& e) {
       w.recorder.reset();
@@ -79,17 +118,24 @@ bool startAuto(lua_State* L, int worldIdx, LuaWorld& w, int state) {
     lua_pushlstring(L, error.data(), error.size());
     return false;
   }
-  lua_pushnumber(L, n);
-  lua_setfield(L, state, "count");
+  if (toFile) {
+    lua_pushnumber(L, n);
+    lua_setfield(L, state, "count");
+  }
   w.recordNumber = n;
+  w.streaming = !live.empty();
   lua_getfield(L, state, "hooked");
   w.framesByLove = lua_toboolean(L, -1) != 0;
   lua_pop(L, 1);
-  lua_getfield(L, state, "worlds");
-  lua_pushvalue(L, worldIdx);
-  lua_pushboolean(L, 1);
-  lua_rawset(L, -3);
-  lua_pop(L, 1);
+  const auto join = [&](const char* set) {
+    lua_getfield(L, state, set);
+    lua_pushvalue(L, worldIdx);
+    lua_pushboolean(L, 1);
+    lua_rawset(L, -3);
+    lua_pop(L, 1);
+  };
+  join("worlds");
+  if (w.streaming) join("streaming");
   // Name what is in it already, in add order.
   pushEnv(L, worldIdx, kSlotToItem);
   const int items = lua_gettop(L);
@@ -104,6 +150,25 @@ bool startAuto(lua_State* L, int worldIdx, LuaWorld& w, int state) {
   }
   lua_pop(L, 1);
   return true;
+}
+
+// Ends a world's automatic recording: the file's end mark, the stream's "closed" to its
+// receiver; an I/O error met on the way is said on stderr.
+void stopAuto(LuaWorld& w) {
+  if (!w.recorder) return;
+  w.recorder->close();
+  if (!w.recorder->ok()) {
+    if (w.recordNumber > 0) {
+      std::fprintf(stderr, "tunnelvision: recording %d: %s\n", w.recordNumber,
+                   w.recorder->error().c_str());
+    } else {
+      std::fprintf(stderr, "tunnelvision: live stream: %s\n", w.recorder->error().c_str());
+    }
+  }
+  w.recorder.reset();
+  w.framesByLove = false;
+  w.streaming = false;
+  w.recordNumber = 0;
 }
 
 // Calls f(worldIdx, LuaWorld&) for each world in state[field], the world pushed at worldIdx.
@@ -143,26 +208,13 @@ int frameAll(lua_State* L) {
 }
 
 // Closes every automatic recording (the game quits, or its error handler runs). Worlds created
-// later record again into the next numbered file.
+// later record again into the next numbered file (and stream, with TV_LIVE).
 int closeAll(lua_State* L) {
   pushState(L);
   const int state = lua_gettop(L);
-  forEachWorld(L, state, "worlds", [](int, LuaWorld& w) {
-    if (!w.recorder) return;
-    w.recorder->close();
-    if (!w.recorder->ok()) {
-      std::fprintf(stderr, "tunnelvision: recording %d: %s\n", w.recordNumber,
-                   w.recorder->error().c_str());
-    }
-    w.recorder.reset();
-    w.framesByLove = false;
-  });
-  lua_newtable(L);
-  lua_createtable(L, 0, 1);
-  lua_pushliteral(L, "k");
-  lua_setfield(L, -2, "__mode");
-  lua_setmetatable(L, -2);
-  lua_setfield(L, state, "worlds");
+  forEachWorld(L, state, "worlds", [](int, LuaWorld& w) { stopAuto(w); });
+  resetSet(L, state, "worlds");
+  resetSet(L, state, "streaming");
   return 0;
 }
 
@@ -268,7 +320,14 @@ bool enable(lua_State* L, const std::string& path) {
   lua_setfield(L, state, "count");
   hookLove(L, state);
   forEachWorld(L, state, "all", [&](int idx, LuaWorld& w) {
-    if (!w.recorder && !startAuto(L, idx, w, state)) lua_pop(L, 1);
+    // A world that only streams gets a recorder that writes the file too (its receiver sees a
+    // new run): one recorder per world.
+    const bool streaming = w.recorder && w.streaming && w.recordNumber == 0;
+    if (streaming) stopAuto(w);
+    if (!w.recorder && !startAuto(L, idx, w, state, streaming)) {
+      std::fprintf(stderr, "tunnelvision: not recording a world: %s\n", lua_tostring(L, -1));
+      lua_pop(L, 1);
+    }
   });
   lua_settop(L, state - 1);
   return true;
@@ -281,12 +340,32 @@ int record(lua_State* L) {
   return 0;
 }
 
-// tunnelvision.stopRecording(): closes every automatic recording and records no new world.
+// tunnelvision.stopRecording(): closes every automatic recording and records no new world
+// into a file. With TV_LIVE the world that streamed streams on (a new run for its receiver).
 int stopAll(lua_State* L) {
-  closeAll(L);
   pushState(L);
+  const int state = lua_gettop(L);
+  lua_getfield(L, state, "streaming");
   lua_pushnil(L);
-  lua_setfield(L, -2, "path");
+  const bool streamed = lua_next(L, -2) != 0;
+  if (streamed) {
+    lua_pop(L, 1);  // the value; the world stays, at state + 2
+  } else {
+    lua_pushnil(L);
+  }
+  const int streamer = lua_gettop(L);
+  closeAll(L);
+  lua_pushnil(L);
+  lua_setfield(L, state, "path");
+  if (streamed) {
+    auto* w = static_cast<LuaWorld*>(lua_touserdata(L, streamer));
+    const bool world = w != nullptr && lua_objlen(L, streamer) == sizeof(LuaWorld) &&
+                       w->magic == LuaWorld::kMagic;
+    if (world && !w->recorder && !startAuto(L, streamer, *w, state, true)) {
+      std::fprintf(stderr, "tunnelvision: not streaming a world: %s\n", lua_tostring(L, -1));
+    }
+  }
+  lua_settop(L, state - 1);
   return 0;
 }
 
@@ -300,10 +379,15 @@ void recordIfAsked(lua_State* L, int worldIdx, LuaWorld& w) {
   lua_pushboolean(L, 1);
   lua_rawset(L, -3);
   lua_pop(L, 1);
-  lua_getfield(L, state, "path");
-  const bool asked = lua_isstring(L, -1);
+  lua_getfield(L, state, "live");
+  const bool live = lua_isstring(L, -1) != 0;
   lua_pop(L, 1);
-  if (asked && !startAuto(L, worldIdx, w, state)) {
+  if (live) {
+    // The stream goes to the newest world: the one before it ends its recording (see above).
+    forEachWorld(L, state, "streaming", [](int, LuaWorld& old) { stopAuto(old); });
+    resetSet(L, state, "streaming");
+  }
+  if (!startAuto(L, worldIdx, w, state, live)) {
     // The directory went away since `record` checked it: say so once per world, play on.
     std::fprintf(stderr, "tunnelvision: not recording a world: %s\n", lua_tostring(L, -1));
     lua_pop(L, 1);
@@ -321,14 +405,29 @@ void pushAutoRecord(lua_State* L, int moduleIdx) {
 }
 
 void recordFromEnvironment(lua_State* L) {
-  // TV_RECORD: once per Lua state (the module may be opened again, e.g. by busted).
+  // TV_RECORD and TV_LIVE: once per Lua state (the module may be opened again, e.g. by busted).
   pushState(L);
-  lua_getfield(L, -1, "env");
+  const int state = lua_gettop(L);
+  lua_getfield(L, state, "env");
   const bool seen = lua_toboolean(L, -1);
   lua_pop(L, 1);
   if (!seen) {
     lua_pushboolean(L, 1);
-    lua_setfield(L, -2, "env");
+    lua_setfield(L, state, "env");
+    std::string live, bad;
+    try {
+      if (const std::optional<tv::LiveOptions> o = tv::liveFromEnvironment("TV_LIVE")) live = o->address;
+    } catch (const std::exception& e) {
+      bad = e.what();  // names the variable and its value
+    }
+    if (!bad.empty()) {
+      // One clear line, and the game runs on without the stream.
+      std::fprintf(stderr, "tunnelvision: %s; the game runs without streaming\n", bad.c_str());
+    } else if (!live.empty()) {
+      lua_pushlstring(L, live.data(), live.size());
+      lua_setfield(L, state, "live");
+      hookLove(L, state);  // frames at LÖVE's steps: where a pause holds the game
+    }
     const char* path = std::getenv("TV_RECORD");
     if (path != nullptr && !enable(L, path)) {
       // One clear line, and the game runs on unrecorded.
@@ -337,7 +436,7 @@ void recordFromEnvironment(lua_State* L) {
       lua_pop(L, 1);
     }
   }
-  lua_pop(L, 1);
+  lua_settop(L, state - 1);
 }
 
 }  // namespace tvlua

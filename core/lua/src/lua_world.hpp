@@ -126,6 +126,7 @@ struct LuaWorld {
   bool luaResponses = false;         // a response was added from Lua
   int recordNumber = 0;              // automatic recording: which file this world writes (1...)
   bool framesByLove = false;         // ... whose frames love.run's steps mark (world:frame waits)
+  bool streaming = false;            // ... streaming live to the TV_LIVE receiver
   tv::ResponseId slide = tv::response::slide;  // what 'slide' names: the answer without a filter
   int busy = 0;  // > 0 while one of this world's filters or responses runs
   std::unique_ptr<tv::Recorder> recorder;  // declared last, destroyed first: it detaches
@@ -296,8 +297,9 @@ int visitedFilter(lua_State* L);
 void recordIfAsked(lua_State* L, int worldIdx, LuaWorld& w);
 /// Puts `record`, `frame` and `stopRecording` into the `tunnelvision` table at moduleIdx.
 void pushAutoRecord(lua_State* L, int moduleIdx);
-/// TV_RECORD: turns automatic recording on (once per Lua state) when the variable is set; a
-/// path that cannot be written is reported on stderr in one line, and the game runs on.
+/// TV_RECORD and TV_LIVE: turn automatic recording and the live stream on (once per Lua state)
+/// when the variables are set; a path that cannot be written, or a TV_LIVE that is not an
+/// address, is reported on stderr in one line naming the value, and the game runs on.
 void recordFromEnvironment(lua_State* L);
 bool isBuiltinResponse(lua_CFunction f, tv::ResponseId& id);
 

@@ -12,7 +12,9 @@
 #   run.sh PROFILE GAMES_DIR MODULE_DIR OUT_DIR [TV_REPLAY]
 #
 # Exit 0: every check held; 1: one failed (said why); 77: the game is not in GAMES_DIR (skip).
-# TV_GAME_FRAMES overrides the profile's frame count; TV_GAME_AS_SHIPPED=1 also reports how far
+# TV_GAME_LIVE=1 instead plays the game once on tunnelvision.bump watched live with no code
+# (TV_LIVE=127.0.0.1:PORT, tv-replay --listen saving the stream), and validates the saved
+# stream traced. TV_GAME_FRAMES overrides the profile's frame count; TV_GAME_AS_SHIPPED=1 also reports how far
 # bump.lua as shipped (its hash orders left as they fall) repeats itself; TV_GAME_TIMING=N also
 # times love.update in N rounds of three runs taking turns — bump.lua, tunnelvision.bump through
 # the FFI (LÖVE's LuaJIT: the module's fast path), and through the C API (TV_LUA_FFI=0) — none
@@ -71,6 +73,7 @@ EOF
     record=(TV_RECORD="$work/recording.tvrec")
   fi
   [ "${TV_LUA_FFI_RUN:-}" = 0 ] && record+=(TV_LUA_FFI=0)
+  [ -n "${TV_LIVE_TO:-}" ] && record+=(TV_LIVE="$TV_LIVE_TO")
   env "${record[@]}" TV_HARNESS="$work/$tag.config.lua" SDL_VIDEODRIVER=offscreen \
     SDL_AUDIODRIVER=dummy ALSOFT_DRIVERS=null timeout 1200 love "$rundir" \
     > "$work/$tag.out" 2>&1
@@ -85,6 +88,29 @@ EOF
 }
 
 echo "== $name: $frames frames, scripted input, headless"
+if [ "${TV_GAME_LIVE:-}" = 1 ]; then
+  [ -n "$replay" ] || { echo "SKIP: watching $name live needs tv-replay"; exit 77; }
+  stream=$work/live.tvrec
+  rm -f "$stream" "$stream.log"
+  "$replay" --listen 0 --out "$stream" --wait 60 > "$stream.log" 2>&1 &
+  listener=$!
+  for _ in $(seq 500); do grep -q "listening on" "$stream.log" 2>/dev/null && break; sleep 0.02; done
+  port=$(sed -n 's/^listening on .*:\([0-9]*\)$/\1/p' "$stream.log")
+  [ -n "$port" ] || { cat "$stream.log"; fail "tv-replay --listen did not start"; exit 1; }
+  TV_LIVE_TO=127.0.0.1:$port play tunnelvision live
+  played=$?
+  wait $listener
+  cat "$stream.log"
+  [ $played = 0 ] || exit 1
+  grep -q "the game closed its recording" "$stream.log" || fail "$name: the stream did not end closed"
+  if "$replay" "$stream" --validate --traced > "$work/validate.txt" 2>&1; then
+    echo "tv-replay --validate --traced live.tvrec: $(tail -n 1 "$work/validate.txt")"
+  else
+    fail "$name: tv-replay --validate --traced live.tvrec:"
+    cat "$work/validate.txt"
+  fi
+  exit $failed
+fi
 if [ -n "${TV_GAME_AS_SHIPPED:-}" ]; then
   # How far bump.lua as shipped repeats itself: its pairs over tables keyed by tables follow
   # memory addresses, which change from run to run.

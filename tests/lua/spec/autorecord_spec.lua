@@ -20,8 +20,9 @@ local function summary(path)
   return tonumber(report:match('^(%d+) frames')), report
 end
 
--- Runs `code` in a fresh interpreter with TV_RECORD set; returns its stdout and stderr.
-local function run(record, code)
+-- Runs `code` in a fresh interpreter with `env` ("NAME=value ...", quoted) before it; returns
+-- its stdout and stderr.
+local function runWith(env, code)
   local script = os.tmpname()
   local f = assert(io.open(script, 'w'))
   f:write(('package.cpath = %q .. "/?.so;" .. package.cpath\n'):format(dir))
@@ -29,13 +30,18 @@ local function run(record, code)
   f:write(code)
   f:close()
   local err = os.tmpname()
-  local p = io.popen(('TV_RECORD=%q %s %q 2>%q'):format(record, vm, script, err))
+  local p = io.popen(('%s %s %q 2>%q'):format(env, vm, script, err))
   local out = p:read('*a')
   p:close()
   local e = io.open(err):read('*a')
   os.remove(script)
   os.remove(err)
   return out, e
+end
+
+-- The same with TV_RECORD set.
+local function run(record, code)
+  return runWith(('TV_RECORD=%q'):format(record), code)
 end
 
 describe('tunnelvision.record(path)', function()
@@ -151,5 +157,70 @@ describe('TV_RECORD', function()
     assert.equal(3, frames)
     assert.truthy(report:find('2 moves'))
     os.remove(path)
+  end)
+end)
+
+-- Watching a program live with no code: TV_LIVE=HOST:PORT streams the newest world to a
+-- receiver (tv-debugger --listen, tv-replay --listen). The streams themselves are tested with
+-- a receiver in tests/lua/love_live.sh; here, what a program sees when the value is wrong or
+-- nobody listens: one line, and it runs on.
+describe('TV_LIVE', function()
+  local program = [[
+    local tv = require 'tunnelvision'
+    local bump = require 'tunnelvision.bump'
+    local world = bump.newWorld()
+    world:add('p', 0, 0, 5, 5)
+    for i = 1, 10 do world:move('p', i, 0); tv.frame() end
+    print('played', world:isRecording())
+  ]]
+
+  it('that is not an address says so, naming the value, and the program runs unstreamed', function()
+    for value, why in pairs({
+      ['localhost'] = 'has no port number',
+      ['127.0.0.1:99999'] = 'has a port outside 1..65535',
+      [':7720'] = "has no host before ':'",
+    }) do
+      local out, err = runWith(('TV_LIVE=%q'):format(value), program)
+      assert.equal('played\tfalse\n', out)
+      assert.equal("tunnelvision: TV_LIVE: '" .. value .. "' " .. why ..
+                   " (expected HOST:PORT or PORT, e.g. 127.0.0.1:7720); the game runs without streaming\n", err)
+    end
+  end)
+
+  it('with nobody listening says so once, and the program runs on without waiting', function()
+    -- Port 1: nobody listens there, and a connect is refused at once.
+    local started = os.time()
+    local out, err = runWith('TV_LIVE=127.0.0.1:1', program)
+    assert.equal('played\ttrue\n', out)
+    local _, said = err:gsub('no receiver at 127%.0%.0%.1:1 %(connection refused%)', '')
+    assert.equal(1, said, err)
+    assert.is_true(os.time() - started < 10)
+  end)
+
+  it('with TV_RECORD too writes the file as well; a newer world takes the stream over and ends the older one', function()
+    local base = os.tmpname()
+    local path = base .. '.tvrec'
+    local out = runWith(('TV_RECORD=%q TV_LIVE=127.0.0.1:1'):format(path), [[
+      local tv = require 'tunnelvision'
+      local bump = require 'tunnelvision.bump'
+      local level1 = bump.newWorld()              -- streams, and records into game.tvrec
+      level1:add('p', 0, 0, 5, 5)
+      for i = 1, 4 do level1:move('p', i, 0); tv.frame() end
+      local level2 = bump.newWorld()              -- a level reloaded: it streams now
+      level2:add('q', 0, 0, 5, 5)
+      for i = 1, 6 do level2:move('q', i, 0); tv.frame() end
+      print(level1:isRecording(), level2:isRecording())
+    ]])
+    assert.equal('false\ttrue\n', out)
+    -- level 1's file ended when level 2 was made: frame 0 and four more, closed.
+    local frames1, report1 = summary(path)
+    assert.equal(5, frames1)
+    assert.truthy(report1:find('4 moves'), report1)
+    local frames2, report2 = summary(base .. '.2.tvrec')
+    assert.equal(7, frames2)
+    assert.truthy(report2:find('6 moves'), report2)
+    os.remove(path)
+    os.remove(base .. '.2.tvrec')
+    os.remove(base)
   end)
 end)
