@@ -254,17 +254,5 @@ TEST(ReplaySource, DrawsAnItemThatNeverMovesInItsCategorysColourUnlessItIsTheLev
   }
 }
 
-// The legend names the category colour as a recording's (or live game's) only: a scene's legend
-// leaves the line out, which takes height from every view's panels.
-TEST(ReplaySource, LegendNamesTheCategoryColourForRecordingsOnly) {
-  const auto l = palette::legend();
-  const auto it = std::find_if(l.begin(), l.end(), [](const palette::LegendEntry& e) {
-    return std::string_view(e.label) == "never moves, by category";
-  });
-  ASSERT_NE(it, l.end());
-  EXPECT_TRUE(it->recordedOnly);
-  EXPECT_EQ(std::count_if(l.begin(), l.end(), [](const palette::LegendEntry& e) { return e.recordedOnly; }), 1);
-}
-
 }  // namespace
 }  // namespace tv::ui
