@@ -583,6 +583,35 @@ void Debugger::goToDifference() {
   for (auto& st : view_.panels) st.frameView = r;
 }
 
+std::optional<tv::Divergence> Debugger::divergence() const {
+  std::optional<tv::Divergence> out;
+  const auto earlier = [&](const tv::Divergence& d) {
+    if (!out || d.frame < out->frame || (d.frame == out->frame && d.call < out->call)) out = d;
+  };
+  if (const ui::ValidationJob* v = checks_.validation(); v && v->done()) {
+    if (const auto d = v->divergence()) earlier(*d);
+  }
+  if (const ui::ReplaySource* r = session_->primary().replay()) {
+    if (const auto& d = r->pictureDivergence()) earlier(*d);
+  }
+  return out;
+}
+
+void Debugger::goToDivergence() {
+  const auto d = divergence();
+  if (!d) return;
+  const ui::ReplaySource* r = session_->primary().replay();
+  if (!r) return;
+  paused_ = true;
+  goTo(d->frame);
+  if (const auto id = r->findLabel(d->item)) select(*id);
+  selectCall(d->call);
+  view_.showTab = ui::Tab::inspector;
+  follow_ = true;
+  const Rect view = session_->followView();
+  for (auto& st : view_.panels) st.frameView = view;
+}
+
 void Debugger::frameAll() {
   follow_ = false;
   const Rect home = session_->primary().home();

@@ -94,6 +94,13 @@ class Debugger {
   void goToFailure(std::size_t index);
   /// What "go" beside "runs differ" does: that frame, the item that differs traced and followed.
   void goToDifference();
+  /// Where a recording's replay differs from it, as every part of the debugger says it (status
+  /// bar, timeline mark, inspector, the picture's label): the earlier of the validation's first
+  /// divergence (untraced, then traced) and the one under the picture on screen
+  /// (ReplaySource::pictureDivergence). None for a scene, a what-if panel, or a faithful replay.
+  [[nodiscard]] std::optional<tv::Divergence> divergence() const;
+  /// What "go" beside "DIVERGED" does: that frame and call, its item traced.
+  void goToDivergence();
   /// Waits for games streaming live at `address` ([HOST:]PORT) in place of what is open; tv::Error
   /// for an address that is malformed or taken (nothing changes). `tryListen` shows it instead.
   void listen(const std::string& address, std::uint64_t keepFrames = 0,

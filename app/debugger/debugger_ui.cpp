@@ -24,6 +24,7 @@
 #include "tv/ui/palette.hpp"
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
+#include "tv/ui/words.hpp"
 #include "tv/record/live.hpp"
 #include "tv/ui/live_source.hpp"
 
@@ -394,6 +395,9 @@ std::vector<std::string> Debugger::status() const {
     return out;
   }
   if (!notice_.empty()) out.push_back(notice_);
+  // A replay that differs from its recording is said first, and then nothing says "valid".
+  const std::optional<tv::Divergence> diverged = divergence();
+  if (diverged) out.push_back("DIVERGED at " + ui::divergenceWords(*diverged));
   const char* unit = isScene() ? "tick" : "frame";
   if (const auto f = checks_.firstFailure()) {
     out.push_back("first failure: " + std::string(unit) + " " + std::to_string(*f) + ", " +
@@ -405,10 +409,14 @@ std::vector<std::string> Debugger::status() const {
   }
   if (const ui::ValidationJob* v = checks_.validation()) {
     if (v->running()) {
-      out.push_back("validating: frame " + std::to_string(v->progress()));
+      if (const auto t = v->tracedProgress()) {
+        out.push_back("validating traced: frame " + std::to_string(*t));
+      } else {
+        out.push_back("validating: frame " + std::to_string(v->progress()));
+      }
     } else if (!v->error().empty()) {
       out.push_back("not validated: " + v->error());
-    } else if (v->done() && !v->divergence()) {
+    } else if (v->done() && !v->divergence() && !diverged) {
       const ui::ReplaySource* r = session_->primary().replay();
       if (r && r->recording().summary().damagedAt) {
         out.push_back("the file is cut or damaged at byte " +
@@ -492,6 +500,11 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   marks.failureText = checks_.failureText();
   if (session_->comparing()) marks.difference = checks_.firstDifference();
   if (checks_.whatIf()) marks.implausible = checks_.whatIf()->firstImplausibleFrame;
+  const std::optional<tv::Divergence> diverged = divergence();
+  if (diverged) {
+    marks.diverged = diverged->frame;
+    marks.divergedText = ui::divergenceWords(*diverged);
+  }
   for (const auto& e : checks_.failures().entries) {
     if (marks.failures.empty() || marks.failures.back() != e.failure.frame)
       marks.failures.push_back(e.failure.frame);
@@ -548,6 +561,14 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
       }
     }
     if (!notice_.empty()) (void)note(pal::kRender, notice_, "note: hover", notice_, false);
+    if (marks.diverged) {
+      const std::string full = "DIVERGED at " + marks.divergedText;
+      const std::string brief = "DIVERGED: frame " + std::to_string(*marks.diverged);
+      if (note(pal::kBad, full, brief, full, true)) {
+        if (ImGui::SmallButton("go##diverged")) goToDivergence();
+        ImGui::SameLine();
+      }
+    }
     if (marks.failure) {
       const std::string full = std::string("first failure: ") + unit + " " +
                                std::to_string(*marks.failure) + ", " + marks.failureText;
@@ -571,11 +592,15 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
     if (const ui::ValidationJob* v = checks_.validation()) {
       if (v->running()) {
         char text[96];
-        std::snprintf(text, sizeof text, "validating: frame %" PRIu64, v->progress());
+        if (const auto t = v->tracedProgress()) {
+          std::snprintf(text, sizeof text, "validating traced: frame %" PRIu64, *t);
+        } else {
+          std::snprintf(text, sizeof text, "validating: frame %" PRIu64, v->progress());
+        }
         (void)note(pal::kDim, text, "validating", text, false);
       } else if (!v->error().empty()) {
         (void)note(pal::kBad, "not validated: " + v->error(), "not validated", v->error(), false);
-      } else if (v->done() && !v->divergence()) {
+      } else if (v->done() && !v->divergence() && !marks.diverged) {
         const ui::ReplaySource* r = session_->primary().replay();
         if (r && r->recording().summary().damagedAt) {
           const std::string text = "the file is cut or damaged at byte " +

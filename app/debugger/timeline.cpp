@@ -53,6 +53,7 @@ std::optional<std::uint64_t> timelineBar(const char* id, std::uint64_t current, 
   mark(marks.difference, pal::kRender);
   mark(marks.implausible, IM_COL32(200, 120, 255, 255));
   mark(marks.failure, pal::kBad);
+  mark(marks.diverged, pal::kBad);
   const float cx = xOf(std::min(current, last));
   dl.AddRectFilled({cx - 2.0f, p.y}, {cx + 2.0f, q.y}, pal::kSelected);
 
@@ -73,6 +74,10 @@ std::optional<std::uint64_t> timelineBar(const char* id, std::uint64_t current, 
       ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kRender),
                          "%s %" PRIu64 ": the movers' states first differ", marks.unit,
                          *marks.difference);
+    }
+    if (marks.diverged) {
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(pal::kBad), "DIVERGED at %s",
+                         marks.divergedText.c_str());
     }
     ImGui::EndTooltip();
   }

@@ -18,6 +18,9 @@ struct TimelineMarks {
   std::optional<std::uint64_t> implausible;  ///< a what-if's goals stop making sense from here
   std::vector<std::uint64_t> failures;       ///< every frame with a failure (small ticks)
   std::string failureText;
+  /// A recording's replay differs from it from here (Debugger::divergence), in its words.
+  std::optional<std::uint64_t> diverged;
+  std::string divergedText;
   std::uint64_t first = 0;  ///< the first frame that can be shown (a live stream drops its oldest)
   std::uint64_t known = 0;  ///< frames the checks have covered
   const char* unit = "tick";  ///< what a step of the bar is called ("frame" for recordings)

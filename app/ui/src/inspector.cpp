@@ -156,11 +156,11 @@ void callContents(const Source& s, const CallInfo& c, const FailureList* list, s
 
 void inspectorContents(const Source& s, const FailureList* failures, std::size_t panel) {
   if (const ReplaySource* r = s.replay()) {
-    if (const auto& d = r->divergence()) {
+    // The same words as the picture's label and the status bar: what is drawn here came from
+    // a world whose replay went another way than the game.
+    if (const std::string label = r->pictureLabel(); !label.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kBad));
-      ImGui::TextWrapped("DIVERGED at frame %" PRIu64 " call %u: %s", d->frame, d->call,
-                         d->what.c_str());
-      ImGui::TextWrapped("  recorded %s, replayed %s", d->expected.c_str(), d->got.c_str());
+      ImGui::TextWrapped("%s", label.c_str());
       ImGui::PopStyleColor();
     }
   }

@@ -35,6 +35,9 @@ void ValidationJob::start(const ReplaySource::Origin& origin, bool wait) {
     error_.clear();
   }
   progress_ = 0;
+  tracedProgress_ = 0;
+  tracing_ = false;
+  tracedOnly_ = false;
   done_ = false;
   running_ = true;
   if (wait) {
@@ -61,6 +64,20 @@ void ValidationJob::run(const ReplaySource::Origin& origin) {
     // Then the game's own moves, judged: what the Failures tab lists for the recorded run.
     if (!cancelled && !cancel_.load()) failures = replay.checkRecorded().recordedFailures;
     if (!cancelled) progress_ = replay.frames();
+    // Then every call traced, as the debugger replays what it draws: a divergence there is one
+    // the picture would show, and the status bar must say so too.
+    if (!d && !cancelled && !cancel_.load()) {
+      tracing_ = true;
+      d = replay.validate(
+          [this](std::uint64_t frame) {
+            tracedProgress_ = frame;
+            return !cancel_.load();
+          },
+          Replay::Tracing::on);
+      cancelled = replay.cancelled();
+      tracedOnly_ = d.has_value();
+      tracing_ = false;
+    }
   } catch (const std::exception& e) {
     error = app::userMessage(e);
   }
@@ -70,6 +87,7 @@ void ValidationJob::run(const ReplaySource::Origin& origin) {
     recordedFailures_ = std::move(failures);
     error_ = std::move(error);
   }
+  tracing_ = false;
   running_ = false;
   done_ = !cancelled;
 }

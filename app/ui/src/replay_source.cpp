@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "tv/ui/palette.hpp"
+#include "tv/ui/words.hpp"
 
 namespace tv::ui {
 
@@ -82,9 +83,24 @@ void ReplaySource::rebuild() {
   moves_.clear();
   callTraced_ = false;
   divergence_.reset();
+  pictureDivergence_.reset();
   primed_ = false;
   if (replay_.frames() == 0) return;
   const std::uint64_t from = frame_ > history_ ? frame_ - history_ : 0;
+  // The world is rebuilt at the keyframe before the history and replayed from there: each call
+  // on the way is stepped and compared (a seek would replay them unchecked), so that a
+  // divergence anywhere under the picture is known, not only one in the frame on screen.
+  if (exact()) {
+    const std::uint64_t start = replay_.seekStart(from);
+    if (start < from) replay_.seek(start, 0);
+    for (std::uint64_t f = start; f < from; ++f) {
+      if (replay_.frame() != f || replay_.call() != 0) replay_.seek(f, 0);
+      for (std::uint32_t k = 0, n = replay_.callCount(f); k < n; ++k) {
+        std::optional<Divergence> d = replay_.step();
+        if (d && !pictureDivergence_) pictureDivergence_ = std::move(d);
+      }
+    }
+  }
   for (std::uint64_t f = from; f <= frame_; ++f) {
     const std::vector<CallInfo> here = f == frame_ ? calls_ : replay_.calls(f);
     stepFrame(f, here, f == frame_ && call_ ? *call_ + 1 : here.size());
@@ -105,7 +121,8 @@ void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
         traces(c) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
     MoveTrace t;
     std::optional<Divergence> d = replay_.step(traced ? &t : nullptr);
-    // Only the frame on screen's: an earlier frame's divergence is the timeline's to mark.
+    if (d && exact() && !pictureDivergence_) pictureDivergence_ = d;
+    // The frame on screen's own, for the inspector's call.
     if (d && f == frame_ && !divergence_) divergence_ = std::move(d);
     if (traced) {
       moves_.push_back({f, std::move(t)});
@@ -250,7 +267,15 @@ std::vector<ItemRow> ReplaySource::items() const {
 
 std::vector<std::string> ReplaySource::notes() const {
   const auto w = replay_.warnings();
-  return {w.begin(), w.end()};
+  std::vector<std::string> out(w.begin(), w.end());
+  if (std::string label = pictureLabel(); !label.empty()) out.push_back(std::move(label));
+  return out;
+}
+
+std::string ReplaySource::pictureLabel() const {
+  if (divergence_ && exact()) return ui::pictureLabel(*divergence_, true);
+  if (pictureDivergence_) return ui::pictureLabel(*pictureDivergence_, false);
+  return {};
 }
 
 }  // namespace tv::ui

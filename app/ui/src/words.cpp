@@ -147,4 +147,17 @@ Said whatHappened(const MoveTrace& m, const Source& s, const Failure* failed) {
   return said;
 }
 
+std::string divergenceWords(const Divergence& d) {
+  std::string s = "frame " + std::to_string(d.frame) + " call " + std::to_string(d.call) + ", " +
+                  std::string(callWords(d.kind));
+  if (!d.item.empty()) s += " " + d.item;
+  return s + ": " + d.what + " recorded " + d.expected + ", replayed " + d.got;
+}
+
+std::string pictureLabel(const Divergence& d, bool here) {
+  return here ? "NOT WHAT THE GAME GOT: the replay differs from the recording at " + divergenceWords(d)
+              : "MAY NOT BE WHAT THE GAME GOT: the replay differed from the recording earlier, at " +
+                    divergenceWords(d);
+}
+
 }  // namespace tv::ui

@@ -586,6 +586,13 @@ void Replay::seek(std::uint64_t frame, std::uint32_t call) {
   d.pendingDivergence.reset();
 }
 
+std::uint64_t Replay::seekStart(std::uint64_t frame) const {
+  const Impl& d = *impl_;
+  if (d.whatIf() || d.statefulMovers || d.keyframes.empty()) return 0;
+  frame = std::min<std::uint64_t>(frame, d.frames.empty() ? 0 : d.frames.size() - 1);
+  return *(std::upper_bound(d.keyframes.begin(), d.keyframes.end(), frame) - 1);
+}
+
 std::uint64_t Replay::frame() const {
   return impl_->frame;
 }

@@ -25,16 +25,27 @@ class ValidationJob {
   ValidationJob(const ValidationJob&) = delete;
   ValidationJob& operator=(const ValidationJob&) = delete;
 
-  /// Validates the recording from the start (stops any run before). `wait`: in this thread.
+  /// Validates the recording from the start (stops any run before), as `tv-replay --validate
+  /// --traced` does: call after call untraced, then — when that matched — every call traced and
+  /// from each keyframe, as the debugger re-runs what it shows. `wait`: in this thread.
   void start(const ReplaySource::Origin& origin, bool wait);
   void stop();
 
   [[nodiscard]] bool running() const { return running_.load(); }
   [[nodiscard]] bool done() const { return done_.load(); }
-  /// Frames checked so far.
+  /// Frames checked so far by the first pass (untraced).
   [[nodiscard]] std::uint64_t progress() const { return progress_.load(); }
-  /// The first divergence, once done (none: the replay matched the recording).
+  /// While the second pass (traced) runs: the frame it is at.
+  [[nodiscard]] std::optional<std::uint64_t> tracedProgress() const {
+    if (!tracing_.load()) return std::nullopt;
+    return tracedProgress_.load();
+  }
+  /// The first divergence, once done (none: the replay matched the recording, untraced and
+  /// traced).
   [[nodiscard]] std::optional<tv::Divergence> divergence() const;
+  /// The divergence was found only by the traced pass: the calls as the game made them replay
+  /// bit for bit, the same calls traced do not.
+  [[nodiscard]] bool divergedTracedOnly() const { return tracedOnly_.load(); }
   /// The recorded run's own moves that tunnelled or ended inside a solid (Replay::checkRecorded),
   /// once done.
   [[nodiscard]] std::vector<MoveDifference> recordedFailures() const;
@@ -45,8 +56,8 @@ class ValidationJob {
   void run(const ReplaySource::Origin& origin);
 
   std::thread thread_;
-  std::atomic<bool> running_{false}, done_{false}, cancel_{false};
-  std::atomic<std::uint64_t> progress_{0};
+  std::atomic<bool> running_{false}, done_{false}, cancel_{false}, tracing_{false}, tracedOnly_{false};
+  std::atomic<std::uint64_t> progress_{0}, tracedProgress_{0};
   mutable std::mutex mutex_;
   std::optional<tv::Divergence> divergence_;
   std::vector<MoveDifference> recordedFailures_;

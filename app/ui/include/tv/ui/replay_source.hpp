@@ -86,6 +86,16 @@ class ReplaySource final : public Source {
   /// The first divergence in the frame on screen (a call's recorded result differs from what
   /// core returned), if any.
   [[nodiscard]] const std::optional<Divergence>& divergence() const { return divergence_; }
+  /// The first divergence among every call replayed to draw this picture — from the keyframe
+  /// the world was rebuilt at (or, playing on, since then) up to the frame and call on screen.
+  /// When there is one the picture is not (or may not be) what the game got: pictureLabel().
+  [[nodiscard]] const std::optional<Divergence>& pictureDivergence() const {
+    return pictureDivergence_;
+  }
+  /// What the picture is labelled with (notes() has it, the world view and the inspector show
+  /// it) when it was drawn from a world whose replay diverged: the frame on screen's divergence
+  /// if it has one, else the earlier one under it. Empty for a faithful replay.
+  [[nodiscard]] std::string pictureLabel() const;
   /// The recorded item with this label, if any (the first, if several share it).
   [[nodiscard]] std::optional<ItemId> findLabel(std::string_view label) const;
   /// True for items that move somewhere in the recording (drawn as bodies); the rest are solids.
@@ -100,6 +110,8 @@ class ReplaySource final : public Source {
   void rebuild();
   void stepFrame(std::uint64_t f, const std::vector<CallInfo>& calls, std::size_t end);
   void trimHistory();
+  /// Replays the recording as it is (not a what-if), so a difference is a divergence.
+  [[nodiscard]] bool exact() const { return !replay_.options().mover.has_value(); }
 
   Replay replay_;
   std::string name_;
@@ -113,6 +125,7 @@ class ReplaySource final : public Source {
   bool callTraced_ = false;
   bool primed_ = false;  // the replay stands at the end of frame_, nothing selected in it
   std::optional<Divergence> divergence_;
+  std::optional<Divergence> pictureDivergence_;
   std::unordered_map<ItemId, std::size_t> recorded_;  // item -> index in replay.items()
   // The picture's storage.
   std::vector<sim::Solid> solids_;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "tv/record/replay.hpp"
 #include "tv/sim/simulation.hpp"
 #include "tv/trace.hpp"
 #include "tv/ui/source.hpp"
@@ -27,5 +28,14 @@ struct Said {
 };
 /// What the move `m` did, from its trace; `failed` (may be null) is its failure, if it failed.
 [[nodiscard]] Said whatHappened(const MoveTrace& m, const Source& source, const Failure* failed);
+
+/// A replay's divergence from its recording, in the words every part of the debugger uses for
+/// it (the status bar, the timeline's mark, the inspector, the picture's label), so that they
+/// cannot disagree: "frame 6 call 0, move player: position recorded (62.3, 16), replayed (32, 16)".
+[[nodiscard]] std::string divergenceWords(const Divergence& d);
+/// The label of a picture drawn from a world whose replay diverged on the way there: in the
+/// frame on screen (`here`), the picture is not what the game got; in an earlier frame replayed
+/// for it, it may not be (a later move of the same item may have brought it back).
+[[nodiscard]] std::string pictureLabel(const Divergence& d, bool here);
 
 }  // namespace tv::ui

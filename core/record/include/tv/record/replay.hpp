@@ -204,6 +204,10 @@ class Replay {
   /// Puts the world just before call `call` of `frame` (kEndOfFrame: after the frame's last
   /// call). Starts from the nearest keyframe at or before it: O(keyframe interval).
   void seek(std::uint64_t frame, std::uint32_t call = kEndOfFrame);
+  /// The frame a seek to `frame` rebuilds the world at: the nearest keyframe at or before it (0
+  /// for a what-if, or a recording with stateful movers, which replay from the start). Stepping
+  /// from there with step() compares every call on the way, which a seek does not.
+  [[nodiscard]] std::uint64_t seekStart(std::uint64_t frame) const;
   [[nodiscard]] std::uint64_t frame() const;  ///< the frame the replay stands in
   [[nodiscard]] std::uint32_t call() const;  ///< index of the next call in frame()
   /// The replayed world as it stands (read only: the replay owns it).
