@@ -101,6 +101,8 @@ class Debugger {
   [[nodiscard]] std::optional<tv::Divergence> divergence() const;
   /// What "go" beside "DIVERGED" does: that frame and call, its item traced.
   void goToDivergence();
+  /// Said after a divergence the validation found only in its traced pass; empty otherwise.
+  [[nodiscard]] std::string tracedOnlyWords(const tv::Divergence& d) const;
   /// Waits for games streaming live at `address` ([HOST:]PORT) in place of what is open; tv::Error
   /// for an address that is malformed or taken (nothing changes). `tryListen` shows it instead.
   void listen(const std::string& address, std::uint64_t keepFrames = 0,

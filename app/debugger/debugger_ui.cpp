@@ -388,6 +388,16 @@ float Debugger::drawMenuBar() {
 
 // [SECTION] timeline and status ------------------------------------------------------------------
 
+std::string Debugger::tracedOnlyWords(const tv::Divergence& d) const {
+  // The validation found it only re-running the calls traced, as the debugger draws them: the
+  // game's own calls replay bit for bit, so this is the debugger's replay at fault, not the file.
+  const ui::ValidationJob* v = checks_.validation();
+  if (!v || !v->done() || !v->divergedTracedOnly()) return {};
+  const auto found = v->divergence();
+  if (!found || found->frame != d.frame || found->call != d.call) return {};
+  return " (only when re-run traced: untraced, every call replays bit for bit)";
+}
+
 std::vector<std::string> Debugger::status() const {
   std::vector<std::string> out;
   if (!message_.empty()) {
@@ -397,7 +407,7 @@ std::vector<std::string> Debugger::status() const {
   if (!notice_.empty()) out.push_back(notice_);
   // A replay that differs from its recording is said first, and then nothing says "valid".
   const std::optional<tv::Divergence> diverged = divergence();
-  if (diverged) out.push_back("DIVERGED at " + ui::divergenceWords(*diverged));
+  if (diverged) out.push_back("DIVERGED at " + ui::divergenceWords(*diverged) + tracedOnlyWords(*diverged));
   const char* unit = isScene() ? "tick" : "frame";
   if (const auto f = checks_.firstFailure()) {
     out.push_back("first failure: " + std::string(unit) + " " + std::to_string(*f) + ", " +
@@ -503,7 +513,7 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   const std::optional<tv::Divergence> diverged = divergence();
   if (diverged) {
     marks.diverged = diverged->frame;
-    marks.divergedText = ui::divergenceWords(*diverged);
+    marks.divergedText = ui::divergenceWords(*diverged) + tracedOnlyWords(*diverged);
   }
   for (const auto& e : checks_.failures().entries) {
     if (marks.failures.empty() || marks.failures.back() != e.failure.frame)
