@@ -48,10 +48,10 @@ struct CornerNudge {
 
 /// What moveCornered did.
 struct CornerMove {
-  Vec2 position;                     ///< where the body ended
-  std::vector<Collision> collisions; ///< every collision, in order (the clipped ceiling's not)
-  bool nudged = false;               ///< a corner correction was made
-  CornerNudge nudge;                 ///< valid when `nudged`
+  Vec2 position;                      ///< where the body ended
+  std::vector<Collision> collisions;  ///< every collision, in order (the clipped ceiling's not)
+  bool nudged = false;                ///< a corner correction was made
+  CornerNudge nudge;                  ///< valid when `nudged`
 };
 
 /// Moves `id` towards `goal` as World::move does, with corner correction (see above).
