@@ -70,6 +70,28 @@ const Contacts::Body* Contacts::find(ItemId item) const {
 std::span<const ContactEvent> Contacts::update(const World& world, ItemId item,
                                                const ContactOptions& o,
                                                std::span<const Collision> met) {
+  WorldObserver* obs = world.observer();
+  if (obs && !obs->busy()) [[unlikely]] {
+    // An outermost call: the filter's answers are reported as they come, the events once done.
+    const WorldObserver::Scope scope(*obs);
+    const WorldObserver::Watched watched{o.filter, *obs};
+    ContactOptions w = o;
+    w.filter = Filter(watched);
+    try {
+      const std::span<const ContactEvent> events = updateQuietly(world, item, w, met);
+      obs->contacted(item, false, events);
+      return events;
+    } catch (...) {
+      obs->failed();
+      throw;
+    }
+  }
+  return updateQuietly(world, item, o, met);
+}
+
+std::span<const ContactEvent> Contacts::updateQuietly(const World& world, ItemId item,
+                                                      const ContactOptions& o,
+                                                      std::span<const Collision> met) {
   if (!world.has(item)) {
     fail(kWhere, "update: item {index=" + std::to_string(item.index) +
                      ", generation=" + std::to_string(item.generation) + "} is not in the world");
@@ -84,12 +106,7 @@ std::span<const ContactEvent> Contacts::update(const World& world, ItemId item,
   // game's (a recorder attached to the world does not see it).
   const double margin = (std::fabs(a.x) + std::fabs(a.y) + a.w + a.h) * 0x1p-40 + 0x1p-1000;
   const Rect wide{a.x - margin, a.y - margin, a.w + 2 * margin, a.h + 2 * margin};
-  if (WorldObserver* obs = world.observer()) {
-    const WorldObserver::Scope quiet(*obs);
-    world.queryRect(wide, found_, item);
-  } else {
-    world.queryRect(wide, found_, item);
-  }
+  world.queryRect(wide, found_, item);  // inside the update's scope: not one of the game's calls
 
   next_.clear();
   for (const ItemId other : found_) {
@@ -101,7 +118,8 @@ std::span<const ContactEvent> Contacts::update(const World& world, ItemId item,
     next_.push_back({{item, other, ContactPhase::begin, n, false},
                      b,
                      world.order(other),
-                     r == response::cross});
+                     r == response::cross,
+                     r == response::oneway});
   }
   // Met in passing: a contact of this update even if it no longer touches (a crossed coin).
   for (const Collision& c : met) {
@@ -112,7 +130,8 @@ std::span<const ContactEvent> Contacts::update(const World& world, ItemId item,
     next_.push_back({{item, c.other, ContactPhase::begin, c.normal, true},
                      world.rect(c.other),
                      world.order(c.other),
-                     true});
+                     true,
+                     false});
   }
   std::sort(next_.begin(), next_.end(),
             [](const Touch& x, const Touch& y) { return x.order < y.order; });
@@ -158,9 +177,9 @@ std::span<const ContactEvent> Contacts::update(const World& world, ItemId item,
   Ground& g = body.ground;
   if (ground) {
     const ItemId gi = ground->event.other;
-    g = {listed(o.solids, gi)   ? GroundKind::solid
-         : listed(o.oneWay, gi) ? GroundKind::oneWay
-                                : GroundKind::ground,
+    g = {listed(o.solids, gi)                     ? GroundKind::solid
+         : listed(o.oneWay, gi) || ground->oneway ? GroundKind::oneWay
+                                                  : GroundKind::ground,
          gi,
          {0, -1},
          groundVelocity,
@@ -183,7 +202,7 @@ std::span<const ContactEvent> Contacts::update(const World& world, ItemId item,
   return events_;
 }
 
-std::span<const ContactEvent> Contacts::forget(ItemId item) {
+std::span<const ContactEvent> Contacts::forget(const World& world, ItemId item) {
   events_.clear();
   if (Body* b = find(item)) {
     for (const Touch& t : b->touches) {
@@ -193,6 +212,8 @@ std::span<const ContactEvent> Contacts::forget(ItemId item) {
     }
     *b = Body{};
   }
+  WorldObserver* obs = world.observer();
+  if (obs && !obs->busy()) obs->contacted(item, true, events_);
   return events_;
 }
 

@@ -343,7 +343,7 @@ TEST(Contacts, BadInputIsRefusedNamingTheValueAndChangesNothing) {
   }
   EXPECT_THROW((void)contacts.update(w, floor), tv::Error);
   ASSERT_EQ(contacts.current(body).size(), 1u) << "the refused calls changed nothing";
-  EXPECT_EQ(words(contacts.forget(body)), (W{"end 0"}));
+  EXPECT_EQ(words(contacts.forget(w, body)), (W{"end 0"}));
   EXPECT_TRUE(contacts.current(body).empty());
 }
 

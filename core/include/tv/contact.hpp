@@ -25,11 +25,16 @@
 ///   item that has left the world since the last update ends its contacts in the same order.
 /// - The ground is the contact under the body (normal (0, −1)) that its filter does not cross:
 ///   of several, the one it overlaps most horizontally, ties to the earlier added. Its kind is
-///   `oneWay` or `solid` when the game listed the item in ContactOptions, `ground` otherwise.
+///   `solid` or `oneWay` when the game listed the item in ContactOptions (`oneWay` also when the
+///   filter answers response::oneway for it), `ground` otherwise.
 ///   Its velocity is how far it moved since the previous update of this body (world units per
 ///   update), 0 when the contact just began.
 /// - Coyote time: for ContactOptions::coyoteUpdates updates after the body left the ground
 ///   without jumping (Contacts::jumped), its ground kind is `coyote` with the last ground's item.
+///
+/// Recording: a tv::Recorder attached to the world records each update (the body, the filter's
+/// answers, the events) and forget; a replay recomputes the events and compares them bit for bit.
+/// The query an update makes is part of it, not one of the game's calls.
 ///
 /// Bad input: an unknown body throws tv::Error naming it, changing nothing.
 
@@ -69,7 +74,7 @@ struct ContactEvent {
 enum class GroundKind : std::uint8_t {
   air,     ///< nothing under it
   ground,  ///< an item not listed as one-way or solid
-  oneWay,  ///< an item listed in ContactOptions::oneWay (a jump-through platform)
+  oneWay,  ///< listed in ContactOptions::oneWay, or answered `oneway` (a jump-through platform)
   solid,   ///< an item listed in ContactOptions::solids (a lift, a moving platform)
   coyote,  ///< in the air, but left the ground at most ContactOptions::coyoteUpdates ago
 };
@@ -104,8 +109,8 @@ class Contacts {
   std::span<const ContactEvent> update(const World& world, ItemId item,
                                        const ContactOptions& o = {},
                                        std::span<const Collision> met = {});
-  /// Stops tracking `item` (removed from the world, say): an end for each of its contacts.
-  std::span<const ContactEvent> forget(ItemId item);
+  /// Stops tracking `item` (removed from `world`, say): an end for each of its contacts.
+  std::span<const ContactEvent> forget(const World& world, ItemId item);
   /// The ground under `item` at its last update (air for a body never updated).
   [[nodiscard]] Ground ground(ItemId item) const;
   /// The body jumped: its coyote time ends now (it keeps its ground if it still stands on it).
@@ -120,6 +125,7 @@ class Contacts {
     Rect otherRect;       // where `other` stood at the update
     std::uint64_t order;  // its add order
     bool crossed;         // the filter answered cross: a contact, not ground
+    bool oneway;          // the filter answered oneway: a one-way platform
   };
   struct Body {
     ItemId id;
@@ -130,6 +136,9 @@ class Contacts {
     ItemId lastGround;    // what it last stood on (coyote time's ground)
     bool jumped = false;  // jumped since it last stood: no coyote time
   };
+  std::span<const ContactEvent> updateQuietly(const World& world, ItemId item,
+                                              const ContactOptions& o,
+                                              std::span<const Collision> met);
   Body* find(ItemId item);
   [[nodiscard]] const Body* find(ItemId item) const;
 
