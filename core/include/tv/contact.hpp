@@ -61,7 +61,7 @@ enum class ContactPhase : std::uint8_t {
 struct ContactEvent {
   ItemId item;   ///< the body that was updated
   ItemId other;  ///< what it touches (or touched)
-  ContactPhase phase = ContactPhase::begin;
+  ContactPhase phase = ContactPhase::begin;  ///< begin, persist or end
   /// Axis normal from `other` towards `item`: (0, −1) when the body stands on `other`, (0, 1)
   /// under a ceiling, (±1, 0) against a side; (0, 0) when they overlap. For a contact met in
   /// passing, the collision's normal; for an end, the normal it had at its last update.
@@ -81,7 +81,7 @@ enum class GroundKind : std::uint8_t {
 
 /// The ground under a body after its last update.
 struct Ground {
-  GroundKind kind = GroundKind::air;
+  GroundKind kind = GroundKind::air;  ///< what it stands on (air: nothing)
   ItemId item;    ///< what it stands on (for coyote: what it last stood on); invalid in the air
   Vec2 normal;    ///< (0, −1) on the ground; (0, 0) in the air or in coyote time
   Vec2 velocity;  ///< the ground's displacement since the previous update, per update
