@@ -32,7 +32,13 @@ void BatchHullGrid::build(std::span<const Rect> hulls) {
   ranges_.assign(hulls.size(), Range{});
   stamp_.assign(hulls.size(), 0);
   epoch_ = 0;
-  if (hulls.empty()) return;
+  if (hulls.empty()) {
+    // One empty cell: what spatialOrder and forEachNear read, even on a grid never built before
+    // (a step of no bodies on a new Batch read a cell that did not exist).
+    nx_ = ny_ = 1;
+    if (cells_.empty()) cells_.resize(1);
+    return;
+  }
 
   double left = hulls[0].x, top = hulls[0].y, right = hulls[0].right(), bottom = hulls[0].bottom();
   double extent = 0;
@@ -74,8 +80,7 @@ void BatchHullGrid::insert(std::uint32_t i) {
   const Range c = rangeOf(hulls_[i]);
   ranges_[i] = c;
   for (std::int32_t cy = c.y0; cy <= c.y1; ++cy)
-    for (std::int32_t cx = c.x0; cx <= c.x1; ++cx)
-      cell(cx, cy).push_back(i);
+    for (std::int32_t cx = c.x0; cx <= c.x1; ++cx) cell(cx, cy).push_back(i);
 }
 
 void BatchHullGrid::erase(std::uint32_t i) {

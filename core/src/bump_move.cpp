@@ -186,10 +186,15 @@ MoveResult World::bumpRun(std::uint32_t self, const Rect& r, Vec2 goal, Filter f
     if (!hit) break;
     bumpMet_.push_back(c.other);
     bumpMetResponse_.push_back(c.response);
-    bumpMetGuard_.push_back(!c.overlaps && c.response != response::cross);
+    // A one-way platform acts as bump's slide when it blocks the body, else as its cross.
+    const ResponseId act =
+        c.response != response::oneway ? c.response
+        : onewayBlocks(c)              ? response::slide
+                                       : response::cross;
+    bumpMetGuard_.push_back(!c.overlaps && act != response::cross);
     const bool moving = c.move.x != 0 || c.move.y != 0;
     bool stop = false;
-    switch (c.response) {
+    switch (act) {
       case response::touch:
         goal = c.touch;
         stop = true;

@@ -305,7 +305,8 @@ MoveResult Mover::pixel(World& world, ItemId id, Vec2 goal, Filter filter, MoveT
       c.response = resp;
       collisions_.push_back(c);
       if (trace) trace->hits.push_back(c);
-      if (resp != response::cross) blocked = true;
+      // A one-way platform blocks only a step onto its top from entirely above it.
+      if (resp != response::cross && (resp != response::oneway || onewayBlocks(c))) blocked = true;
     }
     return blocked;
   };

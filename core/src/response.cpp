@@ -2,7 +2,9 @@
 
 namespace tv {
 
-Leg touchResponse(const Collision& c, Vec2 /*goal*/) { return {c.touch, c.touch}; }
+Leg touchResponse(const Collision& c, Vec2 /*goal*/) {
+  return {c.touch, c.touch};
+}
 
 Leg crossResponse(const Collision& c, Vec2 goal) {
   return {c.itemRect.position(), goal, /*passThrough=*/true};
@@ -24,13 +26,25 @@ Leg bounceResponse(const Collision& c, Vec2 goal) {
   return {c.touch, c.touch + rest};
 }
 
+Leg onewayResponse(const Collision& c, Vec2 goal) {
+  return onewayBlocks(c) ? slideResponse(c, goal) : crossResponse(c, goal);
+}
+
 }  // namespace tv
 
 namespace tv {
 
-Vec2 keepVelocity(Vec2 v, const Collision& /*c*/) { return v; }
+Vec2 keepVelocity(Vec2 v, const Collision& /*c*/) {
+  return v;
+}
 
-Vec2 stopVelocity(Vec2 /*v*/, const Collision& /*c*/) { return {}; }
+Vec2 onewayVelocity(Vec2 v, const Collision& c) {
+  return onewayBlocks(c) ? slideVelocity(v, c) : v;
+}
+
+Vec2 stopVelocity(Vec2 /*v*/, const Collision& /*c*/) {
+  return {};
+}
 
 Vec2 slideVelocity(Vec2 v, const Collision& c) {
   if (v.x * c.normal.x < 0.0) v.x = 0.0;

@@ -44,6 +44,22 @@ TEST(Batch, MoversThatCrossDuringATickCollide) {
   EXPECT_LT(s.world.rect(s.bullet).x, 40.0);
 }
 
+TEST(Batch, AStepOfNoBodiesDoesNothingOnANewBatchAsOnAUsedOne) {
+  // A new Batch's grid had no cell yet: a step of no bodies read one that did not exist (found
+  // by the recording reader's mutation fuzz, replaying a batch call whose body count was 0).
+  Crossing s;
+  const std::uint64_t before = s.world.stateHash();
+  Batch fresh;
+  fresh.step(s.world, std::span<const BatchMove>{});
+  EXPECT_EQ(fresh.size(), 0u);
+  Batch used;
+  const BatchMove moves[] = {{s.bullet, {40, 0}}};
+  used.step(s.world, moves);
+  used.step(s.world, std::span<const BatchMove>{});
+  EXPECT_EQ(used.size(), 0u);
+  EXPECT_NE(s.world.stateHash(), before);  // the one real step moved the bullet
+}
+
 TEST(Batch, OneAtATimeMovesMissTheSameCrossing) {
   // The negative control for the test above.
   Crossing s;
@@ -180,7 +196,8 @@ TEST(Batch, MaxEventsStopsTheTickOnlyWhenAnotherEventIsDue) {
 
   w.add({300, 200, 16, 16});
   const ItemId d = w.add({200, 200, 8, 8});
-  const BatchMove two[] = {{a, {200, 30}}, {d, {384, 200}}};  // d's face 208 -> 392 meets 300 at 1/2
+  const BatchMove two[] = {{a, {200, 30}},
+                           {d, {384, 200}}};  // d's face 208 -> 392 meets 300 at 1/2
   World cut = w;
   batch.step(cut, two, {}, 1);
   // a hit the wall at t = 92/200 and ran that event; d's hit at t = 1/2 did not run, so both

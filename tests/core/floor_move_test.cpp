@@ -58,7 +58,7 @@ class ResultHash {
 };
 
 const std::vector<ResponseFn> kBuiltins = {&touchResponse, &crossResponse, &slideResponse,
-                                           &bounceResponse};
+                                           &bounceResponse, &onewayResponse};
 
 // The bitwise difference between two results, or "" when they are the same.
 std::string difference(const MoveResult& a, const MoveResult& b) {

@@ -51,7 +51,7 @@ struct Scene {
 // collisions and filter questions as the reference, bit for bit, tick after tick.
 TEST(LeanMove, EndsExactlyWhereTheReferenceEnds) {
   const std::vector<ResponseFn> fns = {&touchResponse, &crossResponse, &slideResponse,
-                                       &bounceResponse};
+                                       &bounceResponse, &onewayResponse};
   for (const bool moversMeet : {false, true}) {
     Scene scene(11);
     const std::uint32_t first = scene.firstMover;

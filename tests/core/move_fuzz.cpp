@@ -130,7 +130,7 @@ class FuzzWorld {
       : rng_(seed), seed_(seed), t_(totals), game_(pickCell()), twin_(game_.cellSize()) {
     for (World* w : {&game_, &twin_})
       for (const auto& [name, fn] : kUserResponses) (void)w->addResponse(name, fn);
-    responses_ = {&touchResponse, &crossResponse, &slideResponse, &bounceResponse};
+    responses_ = {&touchResponse, &crossResponse, &slideResponse, &bounceResponse, &onewayResponse};
     for (const auto& r : kUserResponses) responses_.push_back(r.second);
     pickFilters();
     build();

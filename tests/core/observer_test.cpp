@@ -161,8 +161,9 @@ TEST(Observer, AUserResponsesLegIsReported) {
   w.attach(log);
   const ResponseId stop = w.addResponse("stop-short", &stopShort);
   (void)w.move(m, {20, 0}, tv::Filter::all(stop));
-  const std::vector<std::string> expected = {"attached", "response stop-short=4",
-                                             "  filter 1,0=4", "  leg to x=7",
+  // The first id after the built-ins (response::kBuiltinCount: 5).
+  const std::vector<std::string> expected = {"attached", "response stop-short=5",
+                                             "  filter 1,0=5", "  leg to x=7",
                                              "move 1 hits=1"};
   EXPECT_EQ(log.lines, expected);
 }

@@ -157,7 +157,7 @@ class Scene {
   Rng& rng() { return rng_; }
   // The functions of the responses the filter may return, by id.
   [[nodiscard]] std::vector<ResponseFn> responses() const {
-    return {&touchResponse, &crossResponse, &slideResponse, &bounceResponse, &halfwayResponse,
+    return {&touchResponse, &crossResponse, &slideResponse, &bounceResponse, &onewayResponse, &halfwayResponse,
             &backResponse};
   }
 
@@ -354,7 +354,7 @@ TEST(ShortMove, ALegThatLeavesTheBoxStillMeetsWhatLiesBeyondIt) {
     }
     const test::ReferenceResult ref = test::referenceMove(
         full.world, full.mover, full.world.rect(full.mover), {16, 4}, Filter(filter), 64,
-        std::vector<ResponseFn>{&touchResponse, &crossResponse, &slideResponse, &bounceResponse,
+        std::vector<ResponseFn>{&touchResponse, &crossResponse, &slideResponse, &bounceResponse, &onewayResponse,
                                 &recoilResponse});
     EXPECT_TRUE(same(a.position, ref.position));
     EXPECT_EQ(differences(ca, ref.collisions), "");

@@ -67,7 +67,8 @@ TEST(Lift, CarriesItsRiderUpAndDownAtOneToTenTilesATickExactlyOnItsTop) {
             << s.world.rect(s.rider).bottom() << ", lift top " << s.world.rect(s.lift).y;
         ASSERT_TRUE(m.squished.empty());
       }
-      EXPECT_EQ(s.world.rect(s.rider).x, 20.0) << "a vertical lift does not move its rider sideways";
+      EXPECT_EQ(s.world.rect(s.rider).x, 20.0)
+          << "a vertical lift does not move its rider sideways";
     }
   }
 }
@@ -187,7 +188,8 @@ TEST(OneWayPlatform, CarriesItsRiderAndPassesThroughTheBodyBelow) {
   }
 }
 
-// [SECTION] bad input ------------------------------------------------------------------------------
+// [SECTION] bad input
+// ------------------------------------------------------------------------------
 
 TEST(MoveSolid, BadInputIsRefusedNamingItAndChangesNothing) {
   Lift s;
@@ -206,6 +208,67 @@ TEST(MoveSolid, BadInputIsRefusedNamingItAndChangesNothing) {
   o.bodies = twice;
   EXPECT_THROW((void)tv::moveSolid(s.world, s.lift, {0, 0}, o), tv::Error);
   EXPECT_EQ(s.world.stateHash(), before);
+}
+
+TEST(MoveSolid, ASolidMovedIntoAnotherSolidPassesThroughItUnlessItListsItAsABody) {
+  //   +---------+            a door {0, 0, 8, 40} moved right 30 px into a block
+  //   |door|  |block|        {20, 0, 8, 40} that is a solid too (the game moves it by moveSolid)
+  World w(16);
+  const ItemId door = w.add({0, 0, 8, 40});
+  const ItemId block = w.add({20, 0, 8, 40});
+  const SolidMove through = tv::moveSolid(w, door, {30, 0});
+  EXPECT_EQ(through.position, (Vec2{30, 0})) << "solids do not stop solids (as Celeste's)";
+  EXPECT_EQ(w.rect(block), (Rect{20, 0, 8, 40}));
+  // Listed among the door's bodies, the block is pushed like any body.
+  w.update(door, Vec2{0, 0});
+  const std::vector<ItemId> bodies{block};
+  SolidOptions o;
+  o.bodies = bodies;
+  const SolidMove push = tv::moveSolid(w, door, {30, 0}, o);
+  EXPECT_EQ(push.pushed, bodies);
+  EXPECT_EQ(w.rect(block).x, 38.0);
+}
+
+TEST(MoveSolid, ARiderThatIsAlsoASolidRidesAndWhatStandsOnItIsNeverLeftInside) {
+  //        +-+
+  //        |r|           r {20, 80, 6, 8} stands on the platform b
+  //      +-----+
+  //      |  b  |         b {12, 88, 24, 4}: a solid of its own (a smaller lift), riding a
+  //   +-----------+
+  //   |     a     |      a {0, 92, 48, 8}, moved up, then down, 5 px
+  World w(16);
+  const ItemId a = w.add({0, 92, 48, 8});
+  const ItemId b = w.add({12, 88, 24, 4});
+  const ItemId r = w.add({20, 80, 6, 8});
+  const std::vector<ItemId> bodies{b, r};
+  SolidOptions o;
+  o.bodies = bodies;
+  (void)tv::moveSolid(w, a, {0, 87}, o);  // up: b is carried, r is pushed by b in turn
+  EXPECT_TRUE(onTop(w, b, a));
+  EXPECT_TRUE(onTop(w, r, b));
+  (void)tv::moveSolid(w, a, {0, 92}, o);  // down: b is carried; r stood on b, not on a
+  EXPECT_TRUE(onTop(w, b, a));
+  EXPECT_FALSE(tv::overlaps(w.rect(r), w.rect(b)));
+  EXPECT_EQ(w.rect(r).bottom(), 83.0) << "left where it was, to fall by its own gravity";
+  // b moved as a solid itself carries r.
+  const std::vector<ItemId> riders{r};
+  o.bodies = riders;
+  (void)tv::moveSolid(w, b, {12, 83}, o);
+  EXPECT_TRUE(onTop(w, r, b));
+}
+
+TEST(MoveSolid, SquishesAreResultsSoTheGameReactsOnceTheWorldIsWhole) {
+  // No callback runs inside moveSolid but the filter: a squished body is reported, and the game
+  // removes it (or moves it) afterwards, when every item is where moveSolid left it.
+  Lift s;
+  const ItemId ceiling = s.world.add({0, 70, 48, 8});
+  const SolidMove m = tv::moveSolid(s.world, s.lift, {0, 60}, s.options());
+  ASSERT_EQ(m.squished.size(), 1u);
+  EXPECT_EQ(m.squished[0].against, ceiling);
+  EXPECT_FALSE(tv::overlaps(s.world.rect(s.rider), s.world.rect(s.lift)));
+  EXPECT_FALSE(tv::overlaps(s.world.rect(s.rider), s.world.rect(ceiling)));
+  s.world.remove(m.squished[0].body);
+  EXPECT_EQ(s.world.count(), 2u);
 }
 
 TEST(MoveSolid, AFilterThatThrowsLeavesEveryItemWhereItWas) {

@@ -146,7 +146,7 @@ TEST(BadFile, EmptyShortOrForeignFilesAreRefusedAtByteZero) {
 
 TEST(BadFile, AFutureVersionIsRefusedNamingIt) {
   Bytes f = header(16.0, 2);
-  EXPECT_ERROR(f, "byte 8", "format version 2.0", "version 1.1");
+  EXPECT_ERROR(f, "byte 8", "format version 2.0", "version 1.2");
 }
 
 TEST(BadFile, ABadHeaderChecksumOrCellSizeIsRefused) {
@@ -236,10 +236,28 @@ TEST(BadFile, NaNAndInfinityAreRefusedNamingTheField) {
   EXPECT_ERROR(fileWith(keyframe({}), a), "frame 1", "add rect is -inf");
 }
 
+TEST(BadFile, AContactsCallWithAnUndefinedEventIsRefusedNamingIt) {
+  // Two live items (slots 0 and 1); a contacts call of item 0 (kind 15, varint 0, item delta 0),
+  // one event: its code byte, the other as a zigzag from item 0.
+  const Bytes two = keyframe({{0, 0, 16, 16}, {16, 0, 16, 16}});
+  EXPECT_ERROR(fileWith(two, frame1({0x0F, 0x00, 0x00, 0x01, 0x03, 0x02})), "frame 1",
+               "contact event code 3 is not defined");
+  EXPECT_ERROR(fileWith(two, frame1({0x0F, 0x00, 0x00, 0x01, 0x00, 0x00})),
+               "a contact of an item with itself");
+  // Slot 2 holds nothing: only an end may name an item no longer in the world.
+  EXPECT_ERROR(fileWith(two, frame1({0x0F, 0x00, 0x00, 0x01, 0x40, 0x04, 0x00})),
+               "not in the world that is not an end");
+  EXPECT_ERROR(fileWith(two, frame1({0x0F, 0x00, 0x00, 0x01, 0x00, 0x04})), "contact other");
+  EXPECT_ERROR(fileWith(two, frame1({0x0F, 0x00, 0x00, 0x7F})), "contact event count 127");
+  EXPECT_EQ(errorOf(fileWith(two, frame1({0x0F, 0x00, 0x00, 0x01, 0x42, 0x04, 0x00}))), "")
+      << "an end naming a removed item reads";
+}
+
 TEST(BadFile, UnknownCallKindsAndFlagsAreRefused) {
   const std::string at = "byte " + std::to_string(32 + 8 + keyframe({}).size() + 8 + 2);
-  EXPECT_ERROR(fileWith(keyframe({}), frame1({0x0F})), "frame 1", at.c_str(),
-               "unknown call kind 15");
+  // Kinds from 15 on are 15 and a varint: 15 + 1 is beyond the list.
+  EXPECT_ERROR(fileWith(keyframe({}), frame1({0x0F, 0x01})), "frame 1", at.c_str(),
+               "unknown call kind 16");
   EXPECT_ERROR(fileWith(keyframe({}), frame1({0x87})), "queryPoint with undefined flags");
   Bytes frameFlags;
   varint(frameFlags, 1);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tv/batch.hpp"
+#include "tv/contact.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/recorder.hpp"
 #include "tv/timestep.hpp"
@@ -90,6 +91,7 @@ struct Script {
     bullet[0] = world.add({30, 120, 4, 4});
     bullet[1] = world.add({290, 120, 4, 4});
     tv::Batch batch;
+    tv::Contacts contacts;
     tv::ResponseId springy = tv::response::slide;
     Vec2 pv{1.7, 0};
 
@@ -114,6 +116,10 @@ struct Script {
         const tv::MoveResult r =
             world.move(player, goal, filter, f % 2 ? bounds : tv::MoveOptions{});
         movePositions.push_back(r.position);
+        tv::ContactOptions co;
+        co.filter = filter;
+        (void)contacts.update(world, player, co, r.collisions);
+        (void)contacts.update(world, crate);
         for (const tv::Collision& c : r.collisions) {
           if (c.normal.y != 0) pv.y = 0;
           if (c.normal.x != 0) pv.x = -pv.x;
@@ -126,6 +132,7 @@ struct Script {
           const tv::MoveResult m = movers[k].move(world, bodies[k], br.position() + velocity[k],
                                                   k % 2 ? tv::Filter(filter) : tv::Filter{});
           movePositions.push_back(m.position);
+          (void)contacts.update(world, bodies[k], {}, m.collisions);
           for (const tv::Collision& c : m.collisions) {
             if (c.normal.x != 0) velocity[k].x = -velocity[k].x;
             if (c.normal.y != 0) velocity[k].y = -velocity[k].y;
@@ -151,6 +158,7 @@ struct Script {
       }
       // Churn: a removed and re-added crate, a teleported bullet, a response added mid-game.
       if (f % 10 == 5) {
+        (void)contacts.forget(world, crate);
         world.remove(crate);
         crate = world.add({150.0 + f, 140, 20, 20});
         rec.label(crate, "crate", "crate");

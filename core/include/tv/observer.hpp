@@ -31,6 +31,7 @@ struct BatchMove;
 struct MoveOptions;
 struct MoveResult;
 struct SegmentHit;
+struct ContactEvent;
 
 /// What a World, Mover, Batch and FixedStep report to the one observer attached to them (a
 /// tv::Recorder). Each function is called after the call it names succeeded, with its inputs
@@ -75,6 +76,15 @@ class WorldObserver {
   virtual void batchStepped(std::span<const BatchMove> moves, int maxEvents,
                             const Batch& batch) = 0;
 
+  /// `Contacts::update(world, item, ...)` returned `events` (`forget`: `Contacts::forget`, whose
+  /// events are the ends of every contact `item` had). Not pure virtual: observers written
+  /// before contact events keep compiling and ignore them.
+  virtual void contacted(ItemId item, bool forget, std::span<const ContactEvent> events) {
+    (void)item;
+    (void)forget;
+    (void)events;
+  }
+
   /// An attached FixedStep's `advance(frameTime)` returned `ticks`: one rendered frame begins.
   virtual void advanced(double frameTime, int ticks) {
     (void)frameTime;
@@ -111,8 +121,8 @@ class WorldObserver {
 
   /// Asks a filter and reports its answer; wrap one in a Filter for the call's duration.
   struct Watched {
-    const Filter& filter;      ///< the caller's filter
-    WorldObserver& observer;   ///< where its answers go
+    const Filter& filter;     ///< the caller's filter
+    WorldObserver& observer;  ///< where its answers go
     /// The filter's answer for (`item`, `other`), reported to the observer.
     ResponseId operator()(ItemId item, ItemId other) const {
       const ResponseId r = filter(item, other);

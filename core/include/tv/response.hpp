@@ -25,21 +25,23 @@ inline constexpr ResponseId touch = 0;   ///< stop at the contact
 inline constexpr ResponseId cross = 1;   ///< report, pass through, keep going
 inline constexpr ResponseId slide = 2;   ///< stop on the normal's axis, keep the other
 inline constexpr ResponseId bounce = 3;  ///< reflect the rest of the move about the normal
+/// a one-way (jump-through) platform: slide when the item was entirely above it, else cross
+inline constexpr ResponseId oneway = 4;
 inline constexpr ResponseId ignore = 0xFFFF;  ///< from a filter: the pair does not interact
 }  // namespace response
 
 /// One collision, with everything the debugger draws.
 struct Collision {
-  ItemId item;        ///< the mover (invalid for `World::project`)
-  ItemId other;       ///< what it met
+  ItemId item;            ///< the mover (invalid for `World::project`)
+  ItemId other;           ///< what it met
   bool overlaps = false;  ///< the leg started inside `other`
   bool corner = false;    ///< exact corner hit (see Sweep::corner)
-  double ti = 0.0;    ///< time of impact along the leg in [0, 1); minus the overlap area if overlaps
-  Vec2 move;          ///< the leg's displacement (goal - start)
-  Vec2 normal;        ///< axis normal, from other towards item
-  Vec2 touch;         ///< item position at contact, placed from other's edge
-  Rect itemRect;      ///< item at the start of the leg
-  Rect otherRect;     ///< what it met, as it stood
+  double ti = 0.0;  ///< time of impact along the leg in [0, 1); minus the overlap area if overlaps
+  Vec2 move;        ///< the leg's displacement (goal - start)
+  Vec2 normal;      ///< axis normal, from other towards item
+  Vec2 touch;       ///< item position at contact, placed from other's edge
+  Rect itemRect;    ///< item at the start of the leg
+  Rect otherRect;   ///< what it met, as it stood
   ResponseId response = response::slide;  ///< what the filter chose for the pair
   /// The response's own data: where it sends the item next (slide or bounce target; the touch
   /// point for touch; the unchanged goal for cross).
@@ -48,8 +50,8 @@ struct Collision {
 
 /// What a response hands back: the next leg of the move.
 struct Leg {
-  Vec2 start;  ///< where the next leg begins (the collision's touch point, usually)
-  Vec2 goal;   ///< where it aims
+  Vec2 start;                ///< where the next leg begins (the collision's touch point, usually)
+  Vec2 goal;                 ///< where it aims
   bool passThrough = false;  ///< exclude `other` from the rest of this move (cross)
   /// Bump semantics only (MoveSemantics::bump): the response found nothing more in its way, so
   /// the move ends at `goal` (bump's response returned no collisions). Otherwise the next leg
@@ -80,6 +82,19 @@ using ResponseWithContextFn = Leg (*)(void* context, const Collision& c, Vec2 go
 /// From the touch point, the rest of the move reflected about the surface.
 [[nodiscard]] Leg bounceResponse(const Collision& c, Vec2 goal);
 
+/// True when a one-way platform blocks this collision: the item met its top (normal (0, −1))
+/// without overlapping it, and was entirely above it when the leg began (its bottom edge at or
+/// above the top, compared exactly). A body below, beside or inside the platform passes.
+[[nodiscard]] constexpr bool onewayBlocks(const Collision& c) {
+  return !c.overlaps && c.normal.x == 0.0 && c.normal.y == -1.0 &&
+         c.itemRect.bottom() <= c.otherRect.y;
+}
+/// A one-way platform: slideResponse when onewayBlocks, else crossResponse (the platform is
+/// passed and left out of the rest of the move, so a body jumping up through it is never
+/// snagged on its top). A drop-through is the filter answering `cross` for the platform while
+/// the body drops.
+[[nodiscard]] Leg onewayResponse(const Collision& c, Vec2 goal);
+
 /// What a collision does to a body's velocity (any unit per time, returned in the same): the
 /// rule a game, and tv::sim, applies beside the response that moved the body. A component already
 /// leaving the obstacle is always kept, so a body pushed out of an overlap is not sent back in.
@@ -93,6 +108,8 @@ using VelocityFn = Vec2 (*)(Vec2 velocity, const Collision& c);
 [[nodiscard]] Vec2 slideVelocity(Vec2 v, const Collision& c);
 /// Reverses the component along the normal when it points into the obstacle (bounce).
 [[nodiscard]] Vec2 reflectVelocity(Vec2 v, const Collision& c);
+/// slideVelocity when the one-way platform blocked the body (onewayBlocks), else keeps it.
+[[nodiscard]] Vec2 onewayVelocity(Vec2 v, const Collision& c);
 
 /// One built-in response: everything any part of the project needs to know about it.
 struct ResponseDef {
@@ -110,6 +127,8 @@ inline constexpr ResponseDef kBuiltinResponses[] = {
     {"cross", &crossResponse, &keepVelocity, "report the contact and pass through"},
     {"slide", &slideResponse, &slideVelocity, "stop on the normal's axis, keep moving along it"},
     {"bounce", &bounceResponse, &reflectVelocity, "reflect the rest of the move about the normal"},
+    {"oneway", &onewayResponse, &onewayVelocity,
+     "a jump-through platform: slide if the body was entirely above it, else pass through"},
 };
 
 namespace response {
@@ -120,7 +139,8 @@ inline constexpr ResponseId kBuiltinCount = static_cast<ResponseId>(std::size(kB
 static_assert(kBuiltinResponses[response::touch].name == "touch" &&
                   kBuiltinResponses[response::cross].name == "cross" &&
                   kBuiltinResponses[response::slide].name == "slide" &&
-                  kBuiltinResponses[response::bounce].name == "bounce",
+                  kBuiltinResponses[response::bounce].name == "bounce" &&
+                  kBuiltinResponses[response::oneway].name == "oneway",
               "the response ids are the table's order");
 
 /// The built-in named `name`, or response::ignore when no built-in is ("ignore" itself is not a
@@ -146,9 +166,9 @@ class Filter {
   constexpr Filter() = default;
   /// Refers to `f` (not copied): `f` must outlive every call that uses this filter.
   template <class F>
-    requires(!std::is_same_v<std::remove_cvref_t<F>, Filter> &&
-             std::is_invocable_r_v<ResponseId, F&, ItemId, ItemId>)
-  Filter(F&& f)  // NOLINT(google-explicit-constructor): a filter is passed as a lambda
+  requires(!std::is_same_v<std::remove_cvref_t<F>, Filter> &&
+           std::is_invocable_r_v<ResponseId, F&, ItemId, ItemId>)
+      Filter(F&& f)  // NOLINT(google-explicit-constructor): a filter is passed as a lambda
       : ctx_(const_cast<void*>(static_cast<const void*>(&f))),
         fn_([](void* ctx, ItemId a, ItemId b) -> ResponseId {
           return (*static_cast<std::remove_reference_t<F>*>(ctx))(a, b);

@@ -1,4 +1,4 @@
-// bump.responses.*: the four responses with bump.lua's signature
+// bump.responses.*: the four responses (and `oneway`, ours) with bump.lua's signature
 // fn(world, col, x,y,w,h, goalX, goalY, filter) -> goalX, goalY, cols, len, callable directly
 // (and usable in world:addResponse), as bump defines them. slide and bounce write col.slide /
 // col.bounce. A world's moves run the same rules in the core (core/src/bump_move.cpp).
@@ -109,12 +109,26 @@ int redirect(lua_State* L, bool bounce) {
 int slide(lua_State* L) { return redirect(L, false); }
 int bounce(lua_State* L) { return redirect(L, true); }
 
+// A one-way platform (tv::onewayResponse): bump's slide when the item met its top from entirely
+// above it (col.itemRect's bottom at or above col.otherRect's top, not overlapping), else its
+// cross. An extension: bump.lua has no such response.
+int oneway(lua_State* L) {
+  luaL_checktype(L, 2, LUA_TTABLE);
+  lua_getfield(L, 2, "overlaps");
+  const bool overlapping = lua_toboolean(L, -1);
+  lua_pop(L, 1);
+  const double ny = fieldNumber(L, 2, "normal", "y"), nx = fieldNumber(L, 2, "normal", "x");
+  const double bottom = fieldNumber(L, 2, "itemRect", "y") + fieldNumber(L, 2, "itemRect", "h");
+  const double top = fieldNumber(L, 2, "otherRect", "y");
+  return !overlapping && nx == 0 && ny == -1 && bottom <= top ? redirect(L, false) : cross(L);
+}
+
 }  // namespace
 
 namespace {
 // bump's own response functions, by ResponseId: one for each built-in of the core's table.
 constexpr lua_CFunction kBumpFunctions[] = {guarded<touch>, guarded<cross>, guarded<slide>,
-                                            guarded<bounce>};
+                                            guarded<bounce>, guarded<oneway>};
 static_assert(std::size(kBumpFunctions) == tv::response::kBuiltinCount,
               "every built-in response (tv::kBuiltinResponses) has bump's function here");
 }  // namespace

@@ -12,6 +12,7 @@
 #include <lua.hpp>
 
 #include "tv/batch.hpp"
+#include "tv/contact.hpp"
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/recorder.hpp"
@@ -115,6 +116,11 @@ struct LuaWorld {
   std::vector<tv::Collision> last;   // the last `go`'s collisions (getCollision)
   std::vector<FastCollision> fastCols;  // the last fast-path move's (fast_path.cpp)
   std::vector<tv::BatchMove> moves;  // the batch step's input
+  // world:contacts (platforms.cpp): the tracker kept between updates, and its inputs' storage
+  // (members, so that an argument error raised while filling them leaks nothing).
+  tv::Contacts contacts;
+  std::vector<tv::ItemId> oneWayItems, solidItems;
+  std::vector<tv::Collision> metCols;
   // Query and project scratch, one per nesting level (a filter may query the same world).
   struct Scratch {
     std::vector<tv::ItemId> items;
@@ -276,6 +282,7 @@ void installFastPath(lua_State* L, int methodsIdx);
 /// move, check, getRect, go, getCollision; nil without it) in the table at moduleIdx.
 void pushFastPathInfo(lua_State* L, int moduleIdx);
 void registerExtraMethods(lua_State* L, int methodsIdx);   // tunnelvision's additions
+void registerPlatformMethods(lua_State* L, int methodsIdx);  // contacts, ground, moveCornered
 void registerRecordingMethods(lua_State* L, int methodsIdx);  // startRecording, frame...
 void pushValidateRecording(lua_State* L);                     // tunnelvision.validateRecording
 void pushRecordingItems(lua_State* L);                        // tunnelvision.recordingItems

@@ -20,6 +20,7 @@ void pushMethods(lua_State* L) {
   const int methods = lua_gettop(L);
   tvlua::registerWorldMethods(L, methods);
   tvlua::registerExtraMethods(L, methods);
+  tvlua::registerPlatformMethods(L, methods);
   tvlua::registerRecordingMethods(L, methods);
   tvlua::installFastPath(L, methods);
 }

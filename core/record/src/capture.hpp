@@ -49,6 +49,7 @@ enum class Tag : std::uint8_t {
   batchStep,
   label,
   advance,
+  contacts,
   close,  // the last frame ends; the end mark; the file is closed
 };
 
@@ -104,6 +105,12 @@ struct TextRec {
   ItemId id;
   std::uint32_t a, b;
 };
+// Followed by ContactEvent[events], Answer[answers].
+struct ContactsRec {
+  ItemId id;
+  std::uint32_t events, answers;
+  bool forget;
+};
 struct AdvanceRec {
   double frameTime;
   std::int32_t ticks;
@@ -124,6 +131,7 @@ static_assert(std::is_trivially_copyable_v<Answer> && alignof(Answer) <= 8);
 static_assert(std::is_trivially_copyable_v<Leg> && alignof(Leg) <= 8);
 static_assert(std::is_trivially_copyable_v<SegmentHit> && alignof(SegmentHit) <= 8);
 static_assert(std::is_trivially_copyable_v<BatchMove> && alignof(BatchMove) <= 8);
+static_assert(std::is_trivially_copyable_v<ContactEvent> && alignof(ContactEvent) <= 8);
 static_assert(std::is_trivially_copyable_v<ItemId> && std::is_trivially_copyable_v<MoverSpec>);
 
 // Reads one record's body and arrays, in the order they were put.

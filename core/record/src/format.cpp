@@ -14,12 +14,15 @@
 
 namespace tv::rec {
 
-static_assert(kCallKindCount <= 16, "a call's kind is the low 4 bits of its first byte");
+static_assert(kCallKindCount <= kExtendedKind + 256,
+              "a call's kind is the low 4 bits of its first byte, or 15 and a varint");
 
 namespace {
 
+// The kinds below 15 are their code; the others are written with kindBytes.
 constexpr std::uint8_t kindOf(CallKind k) {
-  return static_cast<std::uint8_t>(k);
+  return static_cast<std::uint8_t>(k) < kExtendedKind ? static_cast<std::uint8_t>(k)
+                                                      : kExtendedKind;
 }
 
 // Normals come from a handful of constants; anything else is sent whole.
@@ -575,6 +578,39 @@ void Encoder::advance(double frameTime, int ticks) {
   out.varint(static_cast<std::uint64_t>(ticks));
 }
 
+void Encoder::contacts(ItemId id, bool forget, std::span<const ContactEvent> events,
+                       std::span<const Answer> answers) {
+  const std::size_t at = out.size();
+  out.u8(kindOf(CallKind::contacts));
+  out.varint(static_cast<std::uint64_t>(CallKind::contacts) - kExtendedKind);
+  std::uint8_t flags = static_cast<std::uint8_t>(answers.empty() ? 0 : kAnswers);
+  if (forget) {
+    // The body may have left the world: named in full, as a label's item is.
+    flags |= kForget;
+    out.varint(id.index);
+    out.varint(id.generation);
+  } else {
+    flags |= item(id.index);
+  }
+  out.at(at) |= flags;
+  out.varint(events.size());
+  for (const ContactEvent& e : events) {
+    const bool alive = e.other.index < model.slots.size() && model.slots[e.other.index].alive &&
+                       model.slots[e.other.index].generation == e.other.generation;
+    const std::uint8_t nc = normalCode(e.normal);
+    out.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(e.phase) | (e.met ? 4 : 0) |
+                                     (nc << 3) | (alive ? 0 : 0x40)));
+    out.zigzag(static_cast<std::int64_t>(e.other.index) - static_cast<std::int64_t>(id.index));
+    if (!alive) out.varint(e.other.generation);
+    if (nc == 5) {
+      Group g(out);
+      g.put(e.normal.x, 0, 1);
+      g.put(e.normal.y, 0, 1);
+    }
+  }
+  if (!answers.empty()) answerBlock(answers, id);
+}
+
 // [SECTION] decoder ------------------------------------------------------------------------------
 
 namespace {
@@ -687,10 +723,10 @@ void readCollisions(In& in, Model& m, Call& c, std::size_t n, ItemId self, const
       col.response = rc;
     } else {
       const std::uint64_t r = in.varint("collision response");
-      if (r < kCodedResponses || r >= m.responses.size()) {
+      if (r < kCodedResponses || m.fromFile(r) >= m.responses.size()) {
         in.fail("collision response " + std::to_string(r) + " is not registered");
       }
-      col.response = static_cast<ResponseId>(r);
+      col.response = static_cast<ResponseId>(m.fromFile(r));
     }
     if (col.response >= m.responses.size()) {
       in.fail("collision response " + std::to_string(col.response) + " is not registered");
@@ -778,10 +814,10 @@ void readAnswers(In& in, Model& m, Call& c, ItemId subject) {
         break;
       case 5: {
         const std::uint64_t r = in.varint("answer response");
-        if (r < kCodedResponses || r >= m.responses.size()) {
+        if (r < kCodedResponses || m.fromFile(r) >= m.responses.size()) {
           in.fail("answer response " + std::to_string(r) + " is not registered");
         }
-        a.response = static_cast<ResponseId>(r);
+        a.response = static_cast<ResponseId>(m.fromFile(r));
         break;
       }
       default:
@@ -881,15 +917,20 @@ void decodeKeyframe(In& in, Model& m, WorldState& s, std::uint64_t maxCells) {
   const std::size_t nslots = in.count("keyframe slot count", 1);
   s.nextOrder = in.varint("keyframe nextOrder");
   const std::size_t nresp = in.count("keyframe response count", 1);
-  if (nresp < response::kBuiltinCount || nresp >= response::ignore) {
+  if (nresp < m.fileBuiltins || nresp + (response::kBuiltinCount - m.fileBuiltins) >= response::ignore) {
     in.fail("keyframe response count " + std::to_string(nresp) + " is out of range");
   }
   for (std::size_t k = 0; k < nresp; ++k) {
     s.responses.push_back(in.str("response name", kMaxName));
-    if (k < response::kBuiltinCount && s.responses.back() != kBuiltinResponses[k].name) {
+    if (k < m.fileBuiltins && s.responses.back() != kBuiltinResponses[k].name) {
       in.fail("built-in response " + std::to_string(k) + " is named '" + s.responses.back() + "'");
     }
     if (s.responses.back().empty()) in.fail("an empty response name");
+  }
+  // A file from before a built-in was added: the built-ins it lacks take their places, and its
+  // own responses move up (Model::fromFile maps the ids its calls name).
+  for (std::uint16_t k = m.fileBuiltins; k < response::kBuiltinCount; ++k) {
+    s.responses.insert(s.responses.begin() + k, std::string(kBuiltinResponses[k].name));
   }
   s.slots.resize(nslots);
   Rect prev;
@@ -944,13 +985,17 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.legs.clear();
   c.bodies.clear();
   c.answersInOrder = false;
+  c.contacts.clear();
+  c.forget = false;
   c.item = c.skip = {};
   c.broad = BroadPhase::swept;
   c.maxResponses = kDefaultMaxResponses;
   c.semantics = MoveSemantics::tunnelvision;
   c.maxEvents = kDefaultMaxEvents;
   const std::uint8_t kb = in.u8("call kind");
-  const std::uint8_t kindBits = kb & 0x0F;
+  std::uint64_t kindBits = kb & 0x0F;
+  if (kindBits == kExtendedKind)
+    kindBits += std::min<std::uint64_t>(in.varint("call kind"), 1u << 20);
   if (kindBits >= kCallKindCount) {
     in.failAt(c.offset, "unknown call kind " + std::to_string(kindBits));
   }
@@ -1050,9 +1095,9 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       }
       std::uint8_t extras = 0;
       if (kb & kExtras) {
-        extras = readExtras(
-            in, mover ? static_cast<std::uint8_t>(kHasAnswers | kHasLegs)
-                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers | kHasLegs | kBump));
+        extras = readExtras(in, mover ? static_cast<std::uint8_t>(kHasAnswers | kHasLegs)
+                                      : static_cast<std::uint8_t>(kBounds | kLimit | kHasAnswers |
+                                                                  kHasLegs | kBump));
         if (extras & kBounds) c.broad = BroadPhase::bounds;
         if (extras & kBump) c.semantics = MoveSemantics::bump;
         if (extras & kLimit) c.maxResponses = readLimit(in, "maxResponses", 4096);
@@ -1207,7 +1252,8 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
         Model::Slot& s = m.slots[b.item.index];
         b.start = s.rect;
         b.goal = readGoal(in, s, "batch goal");
-        requireReach(in, m, c.offset, s.rect, b.goal, false, maxCells, "batch move");
+        // The whole hull: a batch body's search reads every cell of its start-to-goal box.
+        requireReach(in, m, c.offset, s.rect, b.goal, true, maxCells, "batch move");
         const Vec2 d = b.goal - s.rect.position();
         if (sameBits(s.rect.x + d.x, b.goal.x) && sameBits(s.rect.y + d.y, b.goal.y))
           s.lastDelta = d;
@@ -1235,6 +1281,55 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
       c.item = {static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(gen)};
       c.name = in.str("label", kMaxName);
       c.category = in.str("category", kMaxName);
+      return;
+    }
+    case CallKind::contacts: {
+      onlyFlags(static_cast<std::uint8_t>(kSameItem | kForget | kAnswers));
+      c.forget = kb & kForget;
+      if (c.forget) {
+        if (kb & kSameItem) in.failAt(c.offset, "a forget marked 'same item'");
+        const std::uint64_t index = in.varint("contacts item index");
+        const std::uint64_t gen = in.varint("contacts item generation");
+        if (index >= 0x7FFFFFFFu || gen > 0xFFFFFFFFu)
+          in.failAt(c.offset, "contacts of an impossible item");
+        c.item = {static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(gen)};
+      } else {
+        c.item = readItem(in, m, kb, "contacts item");
+      }
+      // Each event takes at least 2 bytes (code, other).
+      const std::size_t n = in.count("contact event count", 2);
+      c.contacts.reserve(n);
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::uint8_t code = in.u8("contact event");
+        const std::uint8_t phase = code & 3, nc = (code >> 3) & 7;
+        if (phase > 2 || nc > 5 || (code & 0x80))
+          in.fail("contact event code " + std::to_string(code) + " is not defined");
+        ContactEvent e;
+        e.item = c.item;
+        e.phase = static_cast<ContactPhase>(phase);
+        e.met = code & 4;
+        const std::int64_t index =
+            static_cast<std::int64_t>(c.item.index) + in.zigzag("contact other");
+        if (code & 0x40) {
+          // An item no longer in the world: only an end can name it.
+          const std::uint64_t gen = in.varint("contact other generation");
+          if (e.phase != ContactPhase::end || index < 0 || index >= 0x7FFFFFFF || gen > 0xFFFFFFFFu)
+            in.fail("a contact with an item not in the world that is not an end");
+          e.other = {static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(gen)};
+        } else {
+          e.other = aliveAt(in, m, index, "contact other");
+        }
+        if (e.other == c.item) in.fail("a contact of an item with itself");
+        if (nc == 5) {
+          GroupIn g(in, "contact normal");
+          e.normal.x = g.get(0, 1);
+          e.normal.y = g.get(0, 1);
+        } else {
+          e.normal = kNormals[nc];
+        }
+        c.contacts.push_back(e);
+      }
+      if (kb & kAnswers) readAnswers(in, m, c, c.item);
       return;
     }
     case CallKind::advance: {

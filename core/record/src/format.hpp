@@ -12,6 +12,7 @@
 
 #include "bytes.hpp"
 #include "tv/batch.hpp"
+#include "tv/contact.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/replay.hpp"
 #include "tv/world.hpp"
@@ -20,7 +21,7 @@ namespace tv::rec {
 
 inline constexpr char kMagic[8] = {'T', 'V', 'R', 'E', 'C', 0, '\r', '\n'};
 inline constexpr std::uint16_t kVersionMajor = 1;
-inline constexpr std::uint16_t kVersionMinor = 1;
+inline constexpr std::uint16_t kVersionMinor = 2;  // 1.2: the contacts call (kind 15 + varint)
 inline constexpr std::size_t kHeaderSize = 32;
 inline constexpr std::uint32_t kEndMark = 0x21444E45u;  // "END!": the chunk that closes a file
 inline constexpr std::uint32_t kMaxChunk = 1u << 30;
@@ -38,7 +39,10 @@ enum : std::uint8_t {
   kSkipValid = 0x20,
   kAny = 0x40,
   kAnswers = 0x80,
+  kForget = 0x40,  // contacts: Contacts::forget
 };
+// The kind code that says "the kind is 15 + the varint that follows".
+inline constexpr std::uint8_t kExtendedKind = 15;
 // Extras byte.
 // kBump: the call follows bump.lua's rules (MoveSemantics::bump).
 enum : std::uint8_t { kBounds = 1, kLimit = 2, kHasAnswers = 4, kHasLegs = 8, kBump = 16 };
@@ -82,6 +86,8 @@ struct Call {
   std::vector<Answer> answers;
   bool answersInOrder = false;
   std::vector<Leg> legs;
+  std::vector<ContactEvent> contacts;  // contacts: the events
+  bool forget = false;                 // contacts: Contacts::forget
 };
 
 struct Model {
@@ -103,12 +109,24 @@ struct Model {
   std::vector<MoverSpec> movers;   // by id, over the whole file
   std::vector<bool> moverDefined;  // since the last keyframe
   std::uint64_t cells = 0;         // cells the live items are registered in (the budget)
+  // The built-in responses the file was written with (4 before version 1.2 added `oneway`): a
+  // file's response ids from there on are users', one place further on in this reader's table.
+  std::uint16_t fileBuiltins = response::kBuiltinCount;
+
+  [[nodiscard]] std::uint64_t fromFile(std::uint64_t id) const {
+    return id < fileBuiltins ? id : id + (response::kBuiltinCount - fileBuiltins);
+  }
 
   void reset(const WorldState& s);
   [[nodiscard]] WorldState state() const;
 };
 
 [[nodiscard]] std::uint64_t cellCount(double cellSize, const Rect& r);
+
+// How many built-in responses a file of this minor version was written with.
+[[nodiscard]] constexpr std::uint16_t builtinsOf(unsigned minorVersion) {
+  return minorVersion < 2 ? 4 : response::kBuiltinCount;
+}
 
 class Encoder {
  public:
@@ -136,6 +154,8 @@ class Encoder {
              std::span<const Leg> legs);
   void label(ItemId id, std::string_view label, std::string_view category);
   void advance(double frameTime, int ticks);
+  void contacts(ItemId id, bool forget, std::span<const ContactEvent> events,
+                std::span<const Answer> answers);
 
  private:
   std::uint8_t item(std::uint32_t index);  // kSameItem or 0, writing the delta if needed

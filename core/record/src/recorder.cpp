@@ -432,6 +432,15 @@ void Recorder::askedOverlap(const Rect& r, ItemId skip, bool any) {
   d.answers.clear();
 }
 
+void Recorder::contacted(ItemId item, bool forget, std::span<const ContactEvent> events) {
+  TV_RECORDING();
+  d.put(rec::Tag::contacts, 0,
+        rec::ContactsRec{item, static_cast<std::uint32_t>(events.size()),
+                         static_cast<std::uint32_t>(d.answers.size()), forget},
+        events, std::span<const rec::Answer>(d.answers));
+  d.answers.clear();
+}
+
 void Recorder::responseAdded(std::string_view name, ResponseId) {
   TV_RECORDING();
   d.text(rec::Tag::addResponse, {}, name, {});

@@ -87,9 +87,12 @@ void Replay::Impl::index() {
   }
   if (le32(bytes.data() + 24) != 0) fileFail(24, 0, "unknown header flags");
   model.cellSize = cellSize;
+  fileBuiltins = rec::builtinsOf(minor);
+  model.fileBuiltins = fileBuiltins;
 
   rec::Model m;
   m.cellSize = cellSize;
+  m.fileBuiltins = fileBuiltins;
   rec::Call c;
   WorldState ws;
   std::size_t pos = rec::kHeaderSize;
@@ -425,6 +428,7 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
   const std::uint64_t from = *(kf - 1);
   rec::Model m;
   m.cellSize = d.cellSize;
+  m.fileBuiltins = d.fileBuiltins;
   WorldState ws;
   rec::Call c;
   std::vector<CallInfo> out;
@@ -500,6 +504,19 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
                            std::to_string(c.item.generation) + " '" + c.name + "'" +
                            (c.category.empty() ? "" : " (" + c.category + ")");
             break;
+          case CallKind::contacts: {
+            std::size_t begins = 0, ends = 0;
+            for (const ContactEvent& e : c.contacts) {
+              begins += e.phase == ContactPhase::begin;
+              ends += e.phase == ContactPhase::end;
+            }
+            info.hits = static_cast<std::uint32_t>(c.contacts.size());
+            info.summary = std::string(c.forget ? "Contacts::forget " : "Contacts::update ") + who +
+                           ": " + std::to_string(begins) + " begin, " +
+                           std::to_string(c.contacts.size() - begins - ends) + " persist, " +
+                           std::to_string(ends) + " end";
+            break;
+          }
           case CallKind::advance:
             info.summary = "advance " + readableSeconds(c.frameTime) +
                            " s: " + std::to_string(c.ticks) + " ticks";

@@ -13,6 +13,7 @@
 
 #include "format.hpp"
 #include "tv/batch.hpp"
+#include "tv/contact.hpp"
 #include "tv/record/replay.hpp"
 
 namespace tv {
@@ -67,14 +68,21 @@ struct Replay::Impl {
   std::unique_ptr<World> world;
   rec::LegCursor legs;  // the recorded legs of the call being replayed (its user responses')
   rec::Model model;
+  std::uint16_t fileBuiltins = response::kBuiltinCount;  // the file's (rec::builtinsOf)
   rec::In in;
   rec::Call call;
   std::uint64_t frame = 0;
   std::uint32_t callIndex = 0;
   std::optional<Divergence> pendingDivergence;  // a keyframe that differs from the world
   bool restoreAtKeyframes = false;  // validate(Tracing::on): go on from each keyframe, as seek
-  std::vector<std::unique_ptr<Mover>> movers;   // by recorded mover id
+  std::vector<std::unique_ptr<Mover>> movers;  // by recorded mover id
   Batch batch;
+  // Contacts::update calls: the replay's own tracker, and the bodies it has updated since the
+  // world was last rebuilt (whose begin / persist / end it can check; for the others, only what
+  // they touch).
+  Contacts contacts;
+  std::unordered_set<ItemId> contactsSeen;
+  std::vector<Collision> contactsMet;
   std::unique_ptr<Mover> whatIfMover;
   std::vector<ItemId> found;
   std::vector<BatchMove> batchMoves;

@@ -169,6 +169,8 @@ void Replay::Impl::restoreWorld(const WorldState& ws) {
   }
   world = std::move(w);
   movers.clear();
+  contacts = Contacts{};
+  contactsSeen.clear();
   if (whatIfMover) whatIfMover->reset();
 }
 
@@ -397,8 +399,8 @@ std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool comp
       if (tunnelled) ++report->recordedTunnelled;
       if (overlapping) ++report->recordedOverlapping;
       if (tunnelled || overlapping) {
-        report->recordedFailures.push_back({frame, index, item, E.position(), E.position(), 0.0,
-                                            tunnelled, overlapping, solid});
+        report->recordedFailures.push_back(
+            {frame, index, item, E.position(), E.position(), 0.0, tunnelled, overlapping, solid});
       }
     }
     if (options.itemStats && !classifyRecorded) {
@@ -515,7 +517,18 @@ std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool comp
         break;
       case CallKind::batchStep: {
         batchMoves.clear();
-        for (const rec::BodyOut& b : c.bodies) batchMoves.push_back({b.item, b.goal});
+        for (const rec::BodyOut& b : c.bodies) {
+          // The file's budget was checked against the recording's positions; a world that has
+          // diverged from them (a seek goes on past a divergence) may hold the body elsewhere,
+          // and a batch body's search reads every cell of its start-to-goal box.
+          const Rect S = world->rect(b.item);
+          if (rec::cellCount(cellSize, unite(S, S.at(b.goal))) > options.maxCells) {
+            in.fail("batch body " + labelOf(b.item) +
+                    " would search more cells than the replay's budget from where the replayed "
+                    "world holds it (it differs from the recording there)");
+          }
+          batchMoves.push_back({b.item, b.goal});
+        }
         batch.step(*world, batchMoves, filter, c.maxEvents);
         for (std::size_t i = 0; i < c.bodies.size(); ++i) {
           const rec::BodyOut& b = c.bodies[i];
@@ -537,6 +550,61 @@ std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool comp
             }
             if (distance > farAway && !report->firstImplausibleFrame)
               report->firstImplausibleFrame = frame;
+          }
+        }
+        break;
+      }
+      case CallKind::contacts: {
+        if (!exact) break;
+        const bool had = contactsSeen.count(c.item) > 0;
+        std::span<const ContactEvent> got;
+        if (c.forget) {
+          got = contacts.forget(*world, c.item);
+          contactsSeen.erase(c.item);
+        } else {
+          // What the move met in passing is in the recorded events (met), not in the call.
+          contactsMet.clear();
+          for (const ContactEvent& e : c.contacts) {
+            if (!e.met || e.phase == ContactPhase::end) continue;
+            Collision m;
+            m.item = c.item;
+            m.other = e.other;
+            m.normal = e.normal;
+            contactsMet.push_back(m);
+          }
+          ContactOptions o;
+          o.filter = filter;
+          got = contacts.update(*world, c.item, o, contactsMet);
+          contactsSeen.insert(c.item);
+        }
+        if (!compare) break;
+        // Without the body's history (a replay from a keyframe after its last update), only
+        // what it touches now can be checked: the recorded begins and persists, as begins.
+        const auto phaseName = [](ContactPhase p) {
+          return p == ContactPhase::begin     ? "begin"
+                 : p == ContactPhase::persist ? "persist"
+                                              : "end";
+        };
+        const auto word = [&](const ContactEvent& e, bool withPhase) {
+          return (withPhase ? std::string(phaseName(e.phase)) + " " : std::string()) +
+                 labelOf(e.other) + " normal " + fmt(e.normal) + (e.met ? " met" : "");
+        };
+        std::vector<const ContactEvent*> expected;
+        for (const ContactEvent& e : c.contacts) {
+          if (had || c.forget ? true : e.phase != ContactPhase::end) expected.push_back(&e);
+        }
+        const bool phases = had;
+        if (!had && c.forget) expected.clear();  // nothing to end in a replay without history
+        if (got.size() != expected.size()) {
+          diverge("contact events", std::to_string(expected.size()), std::to_string(got.size()));
+          break;
+        }
+        for (std::size_t i = 0; i < got.size(); ++i) {
+          const ContactEvent &g = got[i], &e = *expected[i];
+          if (g.other != e.other || !same(g.normal, e.normal) || g.met != e.met ||
+              (phases && g.phase != e.phase)) {
+            diverge("contact event " + std::to_string(i), word(e, phases), word(g, phases));
+            break;
           }
         }
         break;

@@ -44,6 +44,7 @@ HeaderInfo readHeader(const std::uint8_t* h, std::size_t size) {
     bad(28, "header checksum mismatch");
   }
   HeaderInfo info;
+  info.minorVersion = minor;
   std::uint64_t cs = 0;
   for (std::size_t i = 0; i < 8; ++i) cs |= std::uint64_t{h[12 + i]} << (8 * i);
   info.cellSize = std::bit_cast<double>(cs);
@@ -152,6 +153,7 @@ void StreamReader::item(Sink& sink) {
       info_ = readHeader(buf_.data(), buf_.size());
       model_ = Model{};
       model_.cellSize = info_.cellSize;
+      model_.fileBuiltins = builtinsOf(info_.minorVersion);
       std::array<std::uint8_t, kHeaderSize> h{};
       std::memcpy(h.data(), buf_.data(), kHeaderSize);
       sink.header(h, info_);

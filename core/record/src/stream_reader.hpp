@@ -38,6 +38,7 @@ inline constexpr std::size_t kMaxLabelBytes = std::size_t{16} << 20;
 struct HeaderInfo {
   double cellSize = 64.0;
   std::uint32_t keyframeEvery = 64;
+  unsigned minorVersion = kVersionMinor;
 };
 // Checks a file header (FORMAT.md); throws tv::Error naming the byte and what is wrong.
 HeaderInfo readHeader(const std::uint8_t* h, std::size_t size);

@@ -259,6 +259,14 @@ void Writer::record(const std::byte* p) {
       if (live_) live_->label(t.id, label, category);
       return;
     }
+    case Tag::contacts: {
+      const ContactsRec c = r.body<ContactsRec>();
+      const auto events = r.array<ContactEvent>(c.events);
+      const auto as = r.array<Answer>(c.answers);
+      if (!c.forget && !tracks(c.id)) return lost(c.id);
+      e.contacts(c.id, c.forget, events, as);
+      return;
+    }
     case Tag::advance: {
       const AdvanceRec a = r.body<AdvanceRec>();
       e.advance(a.frameTime, a.ticks);

@@ -5,7 +5,7 @@
 /// stream's counters and the debugger's choice of traced calls read) all expand this list.
 /// The decoder, the replay and the call summaries switch over CallKind with no default case, so a
 /// new entry does not compile until each of them handles it. A new call is appended (the codes of
-/// the others are the file format).
+/// the others are the file format); kinds from 15 on are written as the code 15 and a varint.
 
 #include <cstddef>
 #include <cstdint>
@@ -13,22 +13,23 @@
 
 // X(kind, role, words): `kind` is the enumerator and the name tools print; `role` a CallRole;
 // `words` the call as the game wrote it, for the debugger's call list.
-#define TV_RECORDED_CALLS(X)                                        \
-  X(add, ::tv::CallRole::item, "add")                               \
-  X(remove, ::tv::CallRole::item, "remove")                         \
-  X(update, ::tv::CallRole::item, "update")                         \
-  X(move, ::tv::CallRole::move, "move")                             \
-  X(check, ::tv::CallRole::sweep, "check")                          \
-  X(project, ::tv::CallRole::sweep, "project")                      \
-  X(queryRect, ::tv::CallRole::query, "queryRect")                  \
-  X(queryPoint, ::tv::CallRole::query, "queryPoint")                \
-  X(querySegment, ::tv::CallRole::query, "querySegment")            \
-  X(anyOverlap, ::tv::CallRole::query, "anyOverlap")                \
-  X(addResponse, ::tv::CallRole::setup, "addResponse")              \
-  X(moverMove, ::tv::CallRole::move, "Mover::move")                 \
-  X(batchStep, ::tv::CallRole::batch, "Batch::step")                \
-  X(label, ::tv::CallRole::note, "label")                           \
-  X(advance, ::tv::CallRole::note, "advance")
+#define TV_RECORDED_CALLS(X)                             \
+  X(add, ::tv::CallRole::item, "add")                    \
+  X(remove, ::tv::CallRole::item, "remove")              \
+  X(update, ::tv::CallRole::item, "update")              \
+  X(move, ::tv::CallRole::move, "move")                  \
+  X(check, ::tv::CallRole::sweep, "check")               \
+  X(project, ::tv::CallRole::sweep, "project")           \
+  X(queryRect, ::tv::CallRole::query, "queryRect")       \
+  X(queryPoint, ::tv::CallRole::query, "queryPoint")     \
+  X(querySegment, ::tv::CallRole::query, "querySegment") \
+  X(anyOverlap, ::tv::CallRole::query, "anyOverlap")     \
+  X(addResponse, ::tv::CallRole::setup, "addResponse")   \
+  X(moverMove, ::tv::CallRole::move, "Mover::move")      \
+  X(batchStep, ::tv::CallRole::batch, "Batch::step")     \
+  X(label, ::tv::CallRole::note, "label")                \
+  X(advance, ::tv::CallRole::note, "advance")            \
+  X(contacts, ::tv::CallRole::query, "Contacts::update")
 
 namespace tv {
 
@@ -38,13 +39,14 @@ enum class CallRole : std::uint8_t {
   move,   ///< moves one item by a sweep (World::move, Mover::move)
   sweep,  ///< one sweep that moves nothing (check, project)
   batch,  ///< moves many items (Batch::step)
-  query,  ///< asks about the world (queryRect, queryPoint, querySegment, anyOverlap)
+  query,  ///< asks about the world (queryRect, queryPoint, querySegment, anyOverlap, contacts)
   setup,  ///< changes how later calls behave (addResponse)
   note,   ///< says something about the game and changes no item (label, advance: a frame's start)
 };
 
 /// What a recorded call was: a World call (add ... anyOverlap, addResponse), a Mover::move, a
-/// Batch::step, a Recorder::label or a FixedStep advance (a frame's start).
+/// Batch::step, a Recorder::label, a FixedStep advance (a frame's start) or a Contacts::update
+/// (or forget).
 enum class CallKind : std::uint8_t {
 #define TV_CALL_KIND(kind, role, words) kind,
   TV_RECORDED_CALLS(TV_CALL_KIND)
