@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "tv/error.hpp"
 #include "tv/mover.hpp"
@@ -100,6 +101,57 @@ TEST(LiftCrushNegativeControl, MovingTheSolidThenTheRidersFailsWithEveryMoverAtE
         EXPECT_EQ(c.squishes, 0u) << at;  // the naive game has no idea
       }
     }
+  }
+}
+
+// What each moving solid did, body by body, for the tools to draw. One column at 1 tile a tick:
+//
+//     ##########   ceiling, 4 tiles above the riders' heads: reached after 4 ticks
+//      [0]  [1]
+//     ====2=====   the lift (body 2) carries 0 and 1 up 16 px a tick
+//
+//     |9|  [6][7][8]  #    the door (body 9) meets the crowd after a tick and pushes it on
+TEST(LiftCrush, TheSimulationSaysWhatEachMovingSolidDidAndASeekKeepsIt) {
+  const SceneDef& scene = findScene("lift-crush");
+  Params p = scene.defaults();
+  p.set("count", 1);
+  p.set("speed", kTile * kHz);
+  Simulation s(scene, p, parseMover("continuous"));
+  const auto find = [&](std::size_t body, SolidAct act) -> const SolidContact* {
+    for (const SolidContact& c : s.solidContacts())
+      if (c.body == body && c.act == act) return &c;
+    return nullptr;
+  };
+  EXPECT_TRUE(s.solidContacts().empty());  // nothing has moved yet
+  s.tick();
+  for (const std::size_t rider : {0u, 1u}) {
+    const SolidContact* c = find(rider, SolidAct::carried);
+    ASSERT_NE(c, nullptr) << rider;
+    EXPECT_EQ(c->solid, 2u);
+    EXPECT_EQ(c->to.y, c->from.y - kTile);  // lifted with the lift, 16 px
+  }
+  const std::vector<SolidContact> first(s.solidContacts().begin(), s.solidContacts().end());
+  bool squished = false, pushed = false;
+  for (int t = 1; t < 6; ++t) {
+    s.tick();
+    squished = squished || find(0, SolidAct::squished) || find(1, SolidAct::squished);
+    pushed = pushed || find(6, SolidAct::pushed);
+  }
+  EXPECT_TRUE(squished);  // the riders pressed against the ceiling
+  EXPECT_TRUE(pushed);    // the crowd's first in the door's way
+  s.seek(1);
+  ASSERT_EQ(s.solidContacts().size(), first.size());
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    EXPECT_EQ(s.solidContacts()[i].body, first[i].body);
+    EXPECT_EQ(s.solidContacts()[i].act, first[i].act);
+    EXPECT_EQ(s.solidContacts()[i].to, first[i].to);
+  }
+  // The naive control moves no solid: nothing to say.
+  p.set("carry", 0);
+  Simulation naive(scene, p, parseMover("continuous"));
+  for (int t = 0; t < 6; ++t) {
+    naive.tick();
+    EXPECT_TRUE(naive.solidContacts().empty());
   }
 }
 

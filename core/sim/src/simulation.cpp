@@ -93,6 +93,7 @@ std::optional<std::size_t> Simulation::solidOf(ItemId id) const {
 
 void Simulation::build(SceneSetup setup) {
   events_.clear();
+  contacts_.clear();
   world_ = World(setup.cellSize);
   gravity_ = setup.gravity;
   rules_ = std::move(setup.rules);
@@ -211,6 +212,7 @@ void Simulation::stepOrThrow(double dt) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
   traceValid_ = false;
   events_.clear();
+  contacts_.clear();
   TickContext ctx = context(dt);
   if (rules_) {
     rules_->control(ctx);
@@ -267,8 +269,27 @@ void Simulation::moveSolids(double dt) {
     o.bodies = riders_;
     o.filter = filter;
     o.oneWay = b.oneWay;
+    const Rect before = b.rect;
     const SolidMove m = moveSolid(world_, b.item, b.rect.position() + b.velocity * dt, o);
     counters_.squishes += m.squished.size();
+    const std::size_t solid = static_cast<std::size_t>(&b - bodies_.data());
+    // Each body once, by what mattered most: squished over pushed over carried. A rising solid
+    // lifts its riders by pushing them (they are in its way); standing on it, they were carried.
+    const auto note = [&](ItemId id, SolidAct act) {
+      const std::int32_t i = id.index < bodyBySlot_.size() ? bodyBySlot_[id.index] : -1;
+      if (i < 0) return;
+      const auto k = static_cast<std::size_t>(i);
+      for (const SolidContact& c : contacts_)
+        if (c.solid == solid && c.body == k) return;
+      const Rect& from = bodies_[k].rect;
+      const bool rode = from.y == placeBefore(before.y, from.h) && from.x < before.right() &&
+                        before.x < from.right();
+      if (act == SolidAct::pushed && rode) act = SolidAct::carried;
+      contacts_.push_back({solid, k, act, from, world_.rect(id)});
+    };
+    for (const Squish& q : m.squished) note(q.body, SolidAct::squished);
+    for (const ItemId id : m.pushed) note(id, SolidAct::pushed);
+    for (const ItemId id : m.carried) note(id, SolidAct::carried);
     for (Body& x : bodies_) x.rect = world_.rect(x.item);
   }
 }
@@ -394,6 +415,7 @@ void Simulation::record() {
   }
   s.counters = counters_;
   s.traceStats = traceStats_;
+  s.contacts = contacts_;
   // Only the pixel mover keeps state between moves (its sub-pixel remainders); copying the
   // others would cost a little every tick and restore nothing.
   s.hasMover = mover_.spec().kind == MoverKind::pixel;
@@ -417,6 +439,7 @@ void Simulation::restore(std::uint64_t t) {
   }
   counters_ = s.counters;
   traceStats_ = s.traceStats;
+  contacts_ = s.contacts;
   if (s.hasMover) mover_ = s.mover;
   tick_ = t;
   traceValid_ = false;

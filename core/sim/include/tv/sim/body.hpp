@@ -2,6 +2,7 @@
 /// What a simulation moves: bodies (an item of the world plus a velocity and a little state),
 /// and what it counts. Everything here is plain data, copied into the snapshot ring each tick.
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -67,6 +68,22 @@ struct Counters {
 
   /// Equal when every counter is.
   friend bool operator==(const Counters&, const Counters&) = default;
+};
+
+/// What a moving solid did to a body (tv::moveSolid's SolidMove, body by body).
+enum class SolidAct : std::uint8_t {
+  carried,   ///< it rode the solid (stood on it) and was moved along
+  pushed,    ///< it was in the solid's way and was pushed to its leading edge
+  squished,  ///< it was pressed between the solid and something that would not give
+};
+
+/// One thing a moving solid did in a tick: to which body, and from where to where.
+struct SolidContact {
+  std::size_t solid = 0;  ///< the moving solid's body index
+  std::size_t body = 0;   ///< the body it carried, pushed or squished
+  SolidAct act = SolidAct::carried;
+  Rect from;  ///< the body before that solid's move
+  Rect to;    ///< the body after it (a squished body: where it was pressed)
 };
 
 /// The velocity after one collision, by the collision's response (all in px/s):

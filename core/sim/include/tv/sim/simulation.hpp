@@ -192,6 +192,11 @@ class Simulation {
   /// What the rules counted in the last tick, body by body, in the order it happened (empty
   /// after a seek, a step back or a restart). Not part of the state; costs a few compares a move.
   [[nodiscard]] std::span<const TickEvent> events() const { return events_; }
+  /// What the moving solids (Body::solid) did in the last tick — each body they carried,
+  /// pushed or squished, solid by solid in body order, each solid's in the order tv::moveSolid
+  /// reports them (squishes, then pushes, then carries). Kept with each snapshot: a step back or
+  /// a seek shows that tick's. Not part of the state.
+  [[nodiscard]] std::span<const SolidContact> solidContacts() const { return contacts_; }
   /// Moves reporting more collisions than `n` are listed in events() (0, the default: none).
   void setManyCollisions(std::size_t n) { manyCollisions_ = n; }
   /// The threshold setManyCollisions set (0: off).
@@ -208,6 +213,7 @@ class Simulation {
     std::vector<BodyState> bodies;
     Counters counters;
     TraceStats traceStats;  // so stepping back through history does not count moves twice
+    std::vector<SolidContact> contacts;
     bool hasMover = false;
     Mover mover;  // only movers with per-item state (pixel); others keep none between moves
   };
@@ -261,6 +267,7 @@ class Simulation {
   TraceStats traceStats_;
 
   std::vector<TickEvent> events_;
+  std::vector<SolidContact> contacts_;
   std::size_t manyCollisions_ = 0;
   std::vector<BatchMove> batchMoves_;
   std::vector<ItemId> riders_;  // every body that is not a moving solid
