@@ -1,6 +1,7 @@
 // Scenes of moving platforms (tv/solid.hpp).
 //   one-way-rise  riders on one-way platforms rising and falling at up to 10 tiles a tick
 //   lift-crush    a lift carrying riders into a ceiling, a crusher, a door pushing a crowd
+//   corner-nudge  bodies jumping into ceiling corners, with and without corner correction
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -443,11 +444,205 @@ SceneDef liftCrush() {
   return def;
 }
 
+// [SECTION] corner-nudge ---------------------------------------------------------------------------
+//
+// One column per clip: a ceiling 3 tiles wide, and two bodies under its ends jumping straight up
+// into its corners, column k's clipping them by k px (0, 1, ... count - 1) — the body's right
+// edge k px under the ceiling's left end, the other's left edge k px under its right end. A roof
+// above stops every jump; a body that lands back on the floor is put back where it started and
+// jumps again.
+//
+//     ################################   roof
+//
+//          +---------------+             ceiling, 3 tiles
+//       [a]|               |[b]          a: its right edge k px left of the ceiling's left end
+//        ^                   ^               ... under it by k px; b: the mirror image
+//     ################################   floor
+//
+// correct 1: the bodies move by tv::moveCornered with maxNudge `nudge` (Celeste's 4 px): a clip
+// of at most `nudge` px is nudged round the corner and the jump goes on up; a deeper one stops.
+// correct 0, the negative control: the mover moves them as it moves anything, and every clip
+// stops the jump (or, for a mover that does not sweep, lands it inside the ceiling).
+//
+// Counted per jump, once: `snags` (stopped on a corner it clipped by at most `nudge` px: a jump
+// the game should have let through), `hits` (stopped on a corner it clipped by more: as it should
+// be), `tunnelled` (ended above the ceiling still under its end: through the corner, not round
+// it), `misses` (got past a corner clipped by more than `nudge` px: pushed round it further than
+// the game allows); `overlaps` (a body that ended a move inside a ceiling, floor or roof),
+// `escapes` (out through the roof or the floor: put back at its start) and `jumps`.
+
+constexpr std::uint8_t kCornerCeiling = 1;
+constexpr std::int32_t kAirborne = 1;  // Body::state: jumped, not landed yet
+constexpr std::int32_t kJudged = 2;    // this jump already counted
+
+class CornerNudgeRules final : public SceneRules {
+ public:
+  CornerNudgeRules(std::vector<Rect> ceilings, std::vector<Vec2> starts, std::vector<Rect> statics,
+                   double floorTop, double nudge, double speed)
+      : ceilings_(std::move(ceilings)),
+        starts_(std::move(starts)),
+        statics_(std::move(statics)),
+        floorTop_(floorTop),
+        nudge_(nudge),
+        speed_(speed) {}
+
+  void control(TickContext& ctx) const override {
+    for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {
+      Body& b = ctx.bodies[i];
+      // Out through the roof or the floor (a mover that does not sweep, fast): counted, and
+      // back to its start.
+      if (b.rect.bottom() <= statics_[0].y || b.rect.y >= statics_[1].bottom()) {
+        ++ctx.counters.escapes;
+        b.state = 0;
+      }
+      if ((b.state & kAirborne) != 0) continue;
+      b.rect = b.rect.at(starts_[i]);  // back under the corner, and up again
+      b.velocity = {0.0, -speed_};
+      b.state = kAirborne;
+      ++ctx.counters.jumps;
+    }
+  }
+
+  void afterMove(TickContext& ctx, std::size_t i, Vec2 /*goal*/,
+                 std::span<const Collision> collisions) const override {
+    Body& b = ctx.bodies[i];
+    const double clip = clipOf(i);
+    for (const Collision& c : collisions) {
+      if ((b.state & kJudged) != 0) break;
+      if (ctx.tagOf(c.other) != kCornerCeiling || c.normal.y <= 0.0) continue;
+      if (clip <= nudge_) {
+        ++ctx.counters.snags;
+      } else {
+        ++ctx.counters.hits;
+      }
+      b.state |= kJudged;
+    }
+    const Rect& r = b.rect;
+    const Rect& ceiling = ceilings_[i / 2];
+    const bool under = r.x < ceiling.right() && ceiling.x < r.right();
+    if ((b.state & kJudged) == 0 && r.bottom() <= ceiling.y && under) {
+      // Above the ceiling and still under its end: through the corner, not round it.
+      ++ctx.counters.tunnelled;
+      b.state |= kJudged;
+    } else if ((b.state & kJudged) == 0 && clip > nudge_ && !under && r.y < ceiling.bottom()) {
+      // Past a corner clipped deeper than the nudge: moved round it further than the game
+      // allows (a mover pushing it out of the corner sideways).
+      ++ctx.counters.misses;
+      b.state |= kJudged;
+    }
+    for (const Rect& s : statics_) {
+      if (overlaps(r, s)) {
+        ++ctx.counters.overlaps;
+        break;
+      }
+    }
+    // Landed: falling, on the floor again. Next tick it jumps from its start.
+    if (b.velocity.y == 0.0 && r.bottom() == floorTop_ && (b.state & kAirborne) != 0 &&
+        ctx.previous[i].y < r.y) {
+      b.state = 0;
+    }
+  }
+
+ private:
+  // Bodies 2k and 2k + 1 clip column k's ceiling by k px.
+  [[nodiscard]] double clipOf(std::size_t i) const { return static_cast<double>(i / 2); }
+
+  std::vector<Rect> ceilings_;
+  std::vector<Vec2> starts_;
+  std::vector<Rect> statics_;
+  double floorTop_;
+  double nudge_;
+  double speed_;
+};
+
+SceneSetup buildCornerNudge(const Params& p) {
+  const Common c = readCommon(p);
+  const double t = c.tile, s = c.size;
+  const bool correct = p.get("correct") != 0.0;
+  const double nudge = p.get("nudge");
+  const double width = 6 * t;
+  if (static_cast<double>(c.count - 1) >= s) {
+    sceneFail("corner-nudge", "count " + formatNumber(static_cast<double>(c.count)) +
+                                  ": the deepest clip (count - 1 px) must be less than the size (" +
+                                  formatNumber(s) + ")");
+  }
+  if (s > 1.5 * t) {
+    sceneFail("corner-nudge", "size " + formatNumber(s) + " must be at most 1.5 tiles (" +
+                                  formatNumber(1.5 * t) + "): a column is 6 tiles wide");
+  }
+  SceneSetup out;
+  out.cellSize = c.cell;
+  out.gravity = {0.0, 1800.0};
+  const double x0 = c.offset, y0 = c.offset;
+  const double total = static_cast<double>(c.count) * width;
+  const Rect roof{x0, y0, total, t / 2};  // statics_[0], the floor statics_[1]
+  const double ceilingY = roof.bottom() + 4 * t;
+  const double floorTop = ceilingY + t / 2 + 2 * t + s;
+  const Rect floor{x0, floorTop, total, t / 2};
+  std::vector<Rect> ceilings, statics{roof, floor};
+  std::vector<Vec2> starts;
+  out.solids.push_back({roof});
+  out.solids.push_back({floor});
+  for (std::int64_t k = 0; k < c.count; ++k) {
+    const double clip = static_cast<double>(k);
+    const double x = x0 + static_cast<double>(k) * width;
+    const Rect ceiling{x + 1.5 * t, ceilingY, 3 * t, t / 2};
+    out.solids.push_back({ceiling, kCornerCeiling});
+    ceilings.push_back(ceiling);
+    statics.push_back(ceiling);
+    for (const double bx : {ceiling.x - s + clip, ceiling.right() - clip}) {
+      const Vec2 at{bx, placeBefore(floorTop, s)};
+      Body b = makeBody({at.x, at.y, s, s}, BodyRole::player, kLayerPlayer, kLayerSolid,
+                        response::slide, {}, static_cast<std::uint32_t>(k));
+      b.falls = true;
+      b.maxNudge = correct ? nudge : 0.0;
+      out.bodies.push_back(b);
+      starts.push_back(at);
+    }
+  }
+  out.rules = std::make_shared<CornerNudgeRules>(std::move(ceilings), std::move(starts),
+                                                 std::move(statics), floorTop, nudge, c.speed);
+  return out;
+}
+
+SceneDef cornerNudge() {
+  CommonDefaults d;
+  d.speed = 600;  // 10 px a tick: the jump clears the ceiling and meets the roof
+  d.size = 12;
+  d.count = 9;
+  d.maxCount = 64;
+  d.speedMeaning = "the jump's speed, straight up";
+  d.sizeMeaning = "side of a jumping body";
+  d.countMeaning = "columns: clips of 0, 1, ... count - 1 px";
+  SceneDef def;
+  def.category = "Platforms";
+  def.name = "corner-nudge";
+  def.description =
+      "bodies jumping into ceiling corners clipped by 0 to 8 px, with and without corner "
+      "correction; counts snags (stopped by a clip it should pass), stops, pass-throughs";
+  def.tagNames = {"floor or roof", "ceiling"};
+  def.missesFail = true;  // a jump past a corner it should have stopped on
+  def.params = commonParams(d);
+  def.params.push_back(realParam("nudge", "px", "corner correction's largest nudge (Celeste: 4)",
+                                 4.0, 0.0, 64.0, false));
+  def.params.push_back(intParam(
+      "correct", "1: corner correction (tv::moveCornered); 0: the mover alone (the control)", 1,
+      0, 1));
+  def.camera = [](const Params& p) {
+    const Common c = readCommon(p);
+    return Rect{c.offset, c.offset, static_cast<double>(c.count) * 6 * c.tile,
+                7 * c.tile + c.size + c.tile / 2};
+  };
+  def.build = buildCornerNudge;
+  return def;
+}
+
 }  // namespace
 
 void registerPlatformScenes(SceneRegistry& r) {
   r.add(oneWayRise());
   r.add(liftCrush());
+  r.add(cornerNudge());
 }
 
 }  // namespace tv::sim::detail

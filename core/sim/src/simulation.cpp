@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "tv/corner.hpp"
 #include "tv/error.hpp"
 #include "tv/outcome.hpp"
 #include "tv/solid.hpp"
@@ -301,9 +302,12 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
     if (!b.active || b.solid) continue;
     if (b.falls) b.velocity = b.velocity + gravity_ * dt;
     const Vec2 goal = b.rect.position() + b.velocity * dt;
-    const bool traced = traced_ && *traced_ == i;
+    // tv::moveCornered keeps no trace: a corrected body's moves are not traced.
+    const bool traced = traced_ && *traced_ == i && b.maxNudge == 0.0;
     if (traced) trace_.clear();
-    const MoveResult r = mover_.move(world_, b.item, goal, filter, traced ? &trace_ : nullptr);
+    const MoveResult r = b.maxNudge > 0.0 ? moveCornered(b.item, goal, b.maxNudge, filter)
+                                          : mover_.move(world_, b.item, goal, filter,
+                                                        traced ? &trace_ : nullptr);
     b.rect = world_.rect(b.item);
     b.velocity = respondVelocity(b.velocity, r.collisions);
     ++counters_.moves;
@@ -320,6 +324,19 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
                   r.collisions.size());
     }
   }
+}
+
+MoveResult Simulation::moveCornered(ItemId item, Vec2 goal, double maxNudge,
+                                    const Filter& filter) {
+  CornerOptions o;
+  o.filter = filter;
+  o.maxNudge = maxNudge;
+  CornerMove m = tv::moveCornered(world_, item, goal, o);
+  cornered_ = std::move(m.collisions);  // MoveResult's collisions are a view: kept here
+  MoveResult r;
+  r.position = m.position;
+  r.collisions = cornered_;
+  return r;
 }
 
 void Simulation::noteCounted(const Counters& before, std::int64_t body, const Rect& start,

@@ -42,6 +42,11 @@ struct Body {
   /// Solid from above only (a jump-through platform): a body meets it only if it was entirely
   /// above it when its move began; as a moving solid, it pushes nothing from below.
   bool oneWay = false;
+  /// Corner correction (tv/corner.hpp): when > 0, the body moves by tv::moveCornered with this
+  /// largest nudge (World::move's exact sweep, nudged round a ceiling corner it clips by at most
+  /// this much), whatever the simulation's mover; 0: by the mover. Its moves are not traced
+  /// (tv::moveCornered keeps no MoveTrace).
+  double maxNudge = 0.0;
 };
 
 /// What the scenes count. Each scene documents which counters it uses and what they mean;

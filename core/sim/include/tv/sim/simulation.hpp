@@ -224,6 +224,7 @@ class Simulation {
   void moveOneByOne(TickContext& ctx, double dt);
   void moveBatched(TickContext& ctx, double dt);
   void moveSolids(double dt);  // the bodies that are moving solids, by tv::moveSolid
+  MoveResult moveCornered(ItemId item, Vec2 goal, double maxNudge, const Filter& filter);
   void record();
   void restore(std::uint64_t t);
   void syncWorld(std::size_t i);
@@ -268,6 +269,7 @@ class Simulation {
 
   std::vector<TickEvent> events_;
   std::vector<SolidContact> contacts_;
+  std::vector<Collision> cornered_;  // the last corner-corrected move's collisions
   std::size_t manyCollisions_ = 0;
   std::vector<BatchMove> batchMoves_;
   std::vector<ItemId> riders_;  // every body that is not a moving solid
