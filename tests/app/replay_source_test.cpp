@@ -252,46 +252,6 @@ TEST(ReplaySource, DrawsAnItemThatNeverMovesInItsCategorysColourUnlessItIsTheLev
       EXPECT_EQ(p.bodyFills[i], 0u);  // a moving body keeps the body colours
     }
   }
-  EXPECT_TRUE(s.pictureHasCategories());  // so the legend says what the guard's colour means
-}
-
-// The legend names the category colour only for a picture that has one: a line more in the
-// legend takes height from every view's panels (at 1280x720 it cut their text).
-//
-//   [g]          [p]-->        g labelled with the level's own category "tile": a solid
-//   ================
-TEST(RecordingSession, LegendNamesTheCategoryColourOnlyWhenThePictureDrawsIt) {
-  World w(16);
-  Recorder rec;
-  w.attach(rec);
-  for (int i = 0; i < 8; ++i) rec.label(w.add({i * 16.0, 32, 16, 16}), "tile", "tile");
-  rec.label(w.add({0, 16, 8, 16}), "block", "tile");
-  const ItemId player = w.add({40, 20, 8, 12});
-  rec.label(player, "player", "player");
-  (void)w.move(player, {44, 20});
-  rec.frame();
-  w.detach();
-  rec.close();
-  RecordingSession s(Replay::fromBytes(rec.bytes()), "game.tvrec");
-  s.goTo(0);
-  const WorldPicture p = s.picture();
-  EXPECT_EQ(p.solids.size(), 9u);
-  EXPECT_FALSE(s.pictureHasCategories());
-
-  const auto named = [](std::span<const palette::LegendEntry> l) {
-    return std::any_of(l.begin(), l.end(), [](const palette::LegendEntry& e) {
-      return std::string_view(e.label) == "still, by category";
-    });
-  };
-  EXPECT_FALSE(named(palette::legend()));
-  EXPECT_FALSE(named(palette::legend(false)));
-  ASSERT_TRUE(named(palette::legend(true)));
-  // Without it the legend is the one every golden was drawn with: the same entries in order.
-  const auto with = palette::legend(true), without = palette::legend(false);
-  ASSERT_EQ(with.size(), without.size() + 1);
-  for (std::size_t i = 0; i < without.size(); ++i) {
-    EXPECT_STREQ(with[i].label, without[i].label);
-  }
 }
 
 }  // namespace

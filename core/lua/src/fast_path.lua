@@ -41,6 +41,13 @@ local result = ffi.new('struct tvlua_fast_result')
 local rect = ffi.new('double[4]')
 local collision = ffi.new('struct tvlua_fast_collision')
 
+-- Every call below first writes to the buffer the C function fills (`rect[0] = 0`, ...). The
+-- write is what keeps the values the caller has read out of it values: LuaJIT 2.1's x86-64
+-- backend may fuse a read from a buffer into the instruction that uses the value, reading the
+-- memory there instead, and it checks only for stores in between, not for calls. Without a
+-- store, `local _, y, _, h = world:getRect(a); local _, oy = world:getRect(b); if y + h <= oy`
+-- compiled to an add of b's h (tests/lua/spec/fast_path_jit_spec.lua).
+
 -- world -> its tables, found once per world (weak: a world collected takes its entry along).
 local states = setmetatable({}, { __mode = 'k' })
 local function state(world)
@@ -91,6 +98,7 @@ local function run(world, s, item, goalX, goalY, flags)
   -- A cell emptied since the last collection stays counted until the next one (countCells).
   local sentinel = s.sentinel
   if sentinel[1] ~= nil then flags = flags + SENTINEL_ALIVE end
+  result.n = 0
   if fastMove(world, slot, goalX, goalY, flags, result) ~= 0 then return false end
   if result.emptied ~= 0 and sentinel[1] == nil then sentinel[1] = {} end
   return true
@@ -124,6 +132,7 @@ methods.getRect = function(world, item)
   local s = item ~= nil and state(world)
   if s then
     local slot = s.itemToSlot[item]
+    rect[0] = 0
     if slot ~= nil and fastRect(world, slot, rect) == 0 then
       return rect[0], rect[1], rect[2], rect[3]
     end
@@ -145,6 +154,7 @@ end
 methods.getCollision = function(world, i)
   if type(i) == 'number' then
     local s = state(world)
+    collision.unused = 0
     if s ~= nil and fastCollision(world, i, collision) == 0 then
       local c = collision
       return s.slotToItem[c.other + 1], s.names[c.response], c.normalX, c.normalY, c.ti,
