@@ -86,7 +86,7 @@ enum class SolidAct : std::uint8_t {
 struct SolidContact {
   std::size_t solid = 0;  ///< the moving solid's body index
   std::size_t body = 0;   ///< the body it carried, pushed or squished
-  SolidAct act = SolidAct::carried;
+  SolidAct act = SolidAct::carried;  ///< what the solid did to it
   Rect from;  ///< the body before that solid's move
   Rect to;    ///< the body after it (a squished body: where it was pressed)
 };
