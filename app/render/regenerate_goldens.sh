@@ -57,8 +57,8 @@ unset GALLIUM_DRIVER LIBGL_ALWAYS_SOFTWARE
   echo "violet substeps, red hits (rect at touch, normal, touch point), green response targets,"
   echo "cyan/orange/yellow the physics, render and floored-pixel positions; where a scene has them,"
   echo "brown moving solids, a dashed lime line on a one-way side, and the bodies a moving solid"
-  echo "carried (blue), pushed (pink) or squished (crimson) that tick. The legend in every picture"
-  echo "says the same."
+  echo "carried (blue), pushed (pink) or squished (crimson) that tick, and green corner nudges."
+  echo "The legend in every picture says the same."
 } > "$readme"
 
 count=0

@@ -212,11 +212,26 @@ TEST_F(ImGuiFixture, WhatMovingSolidsDidIsDrawnInItsOwnColours) {
   cam.frame(oneWay->simulation().camera(), {0, 0}, {1280, 720});
   EXPECT_TRUE(coloursIn(cam, oneWay->picture()).count(palette::kOneWay));
 
+  // A corner correction (corner-nudge, tick 4: jumps meeting the ceilings), in its own colour;
+  // none without correction.
+  const auto nudged = sceneAt("corner-nudge", 4);
+  ASSERT_FALSE(nudged->simulation().cornerNudges().empty());
+  cam.frame(nudged->simulation().camera(), {0, 0}, {1280, 720});
+  EXPECT_TRUE(coloursIn(cam, nudged->picture()).count(palette::kNudge));
+  {
+    const sim::SceneDef& def = sim::findScene("corner-nudge");
+    sim::Params p = def.defaults();
+    p.set("correct", 0);
+    SimSource off(def, p, MoverSpec{});
+    off.advanceTo(4, 0.0);
+    EXPECT_FALSE(coloursIn(cam, off.picture()).count(palette::kNudge));
+  }
+
   const auto bullets = sceneAt("bullets-wall", 2);
   cam.frame(bullets->simulation().camera(), {0, 0}, {1280, 720});
   const std::set<ImU32> plain = coloursIn(cam, bullets->picture());
   for (const ImU32 c : {palette::kMovingSolid, palette::kOneWay, palette::kCarried,
-                        palette::kPushed, palette::kSquished}) {
+                        palette::kPushed, palette::kSquished, palette::kNudge}) {
     EXPECT_FALSE(plain.count(c)) << std::hex << c;
   }
 }
@@ -244,6 +259,9 @@ TEST_F(ImGuiFixture, TheLegendNamesPlatformColoursOnlyWhereTheSceneHasThem) {
     EXPECT_TRUE(has(oneWay, label)) << label;
     EXPECT_EQ(has(lifts, label), std::string_view(label) != "one-way side") << label;
   }
+  EXPECT_FALSE(has(plain, "corner nudge"));
+  EXPECT_FALSE(has(lifts, "corner nudge"));
+  EXPECT_TRUE(has(shown(*sceneAt("corner-nudge", 0)), "corner nudge"));
   // The platform entries come after the others: without them, the same list in the same order.
   ASSERT_EQ(lifts.size(), plain.size() + 4);
   EXPECT_TRUE(std::equal(plain.begin(), plain.end(), lifts.begin()));

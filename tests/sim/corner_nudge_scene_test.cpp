@@ -85,6 +85,44 @@ TEST(CornerNudgeNegativeControl, WithoutCorrectionEveryMoverFailsAtTheCornersAtE
   }
 }
 
+// The tools draw each nudge: the simulation lists them per tick, with the ceiling and the body
+// where it met the corner and where the nudge put it. At 600 px/s the jumps meet the ceilings on
+// tick 4: bodies 2k and 2k + 1 clip column k's corners by k px, so those of columns 1 to 4 are
+// nudged (by k px, outwards) and no other.
+TEST(CornerNudge, TheSimulationListsEachNudgeAndASeekKeepsIt) {
+  const SceneDef& scene = findScene("corner-nudge");
+  Simulation s(scene, scene.defaults(), parseMover("continuous"));
+  for (int t = 0; t < 3; ++t) s.tick();
+  EXPECT_TRUE(s.cornerNudges().empty());
+  s.tick();
+  ASSERT_EQ(s.cornerNudges().size(), 8u);
+  for (const CornerNudgeAt& n : s.cornerNudges()) {
+    const double clip = static_cast<double>(n.body / 2);
+    EXPECT_GE(clip, 1.0) << n.body;
+    EXPECT_LE(clip, 4.0) << n.body;
+    const Rect ceiling = s.world().rect(n.ceiling);
+    EXPECT_EQ(n.from.y, ceiling.bottom()) << "met from below";
+    if (n.body % 2 == 0) {
+      EXPECT_EQ(n.to.x, n.from.x - clip) << n.body;
+      EXPECT_EQ(n.to.right(), ceiling.x) << n.body;
+    } else {
+      EXPECT_EQ(n.to.x, n.from.x + clip) << n.body;
+      EXPECT_EQ(n.to.x, ceiling.right()) << n.body;
+    }
+  }
+  s.tick();
+  s.seek(4);
+  EXPECT_EQ(s.cornerNudges().size(), 8u);
+  // Without correction there is nothing to list.
+  Params p = scene.defaults();
+  p.set("correct", 0);
+  Simulation off(scene, p, parseMover("continuous"));
+  for (int t = 0; t < 6; ++t) {
+    off.tick();
+    EXPECT_TRUE(off.cornerNudges().empty());
+  }
+}
+
 TEST(CornerNudge, TheSameTicksGiveTheSameHash) {
   const SceneDef& scene = findScene("corner-nudge");
   Simulation a(scene, scene.defaults(), parseMover("continuous"));

@@ -140,6 +140,8 @@ TEST_F(DebuggerDriver, NoTextIsCutAtAPanelsEdge) {
                    "3", "--view", "-8,-40,456,400", "--carry", "0"}},
       {1024, 640, {"--scene", "one-way-rise", "--compare", "discrete,continuous", "--tick", "3",
                    "--body", "2"}},
+      {1024, 640, {"--scene", "corner-nudge", "--mover", "continuous", "--tick", "4", "--body",
+                   "4", "--view", "100,30,290,100"}},
   };
   for (const Layout& c : cases) {
     resize(c.w, c.h);

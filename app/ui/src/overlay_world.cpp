@@ -119,6 +119,18 @@ void drawSolidContacts(ImDrawList& dl, const Camera& cam, const WorldPicture& pi
   }
 }
 
+// Corner corrections this tick: the body where it met the corner, dashed, and an arrow to where
+// the nudge put it, outlined.
+void drawCornerNudges(ImDrawList& dl, const Camera& cam, const WorldPicture& pic) {
+  for (const sim::CornerNudgeAt& n : pic.nudges) {
+    if (!cam.sees(n.from) && !cam.sees(n.to)) continue;
+    detail::dashedOutline(dl, cam, n.from, pal::kNudge);
+    detail::outline(dl, cam, n.to, pal::kNudge, 2.0f);
+    detail::arrow(dl, cam.toScreen(n.from.center()), cam.toScreen(n.to.center()), pal::kNudge,
+                  1.5f);
+  }
+}
+
 }  // namespace
 
 void drawSolids(ImDrawList& dl, const Camera& cam, std::span<const sim::Solid> solids) {
@@ -146,6 +158,7 @@ void drawBodies(ImDrawList& dl, const Camera& cam, const WorldPicture& pic) {
     if (b.oneWay) drawOneWaySide(dl, cam, r);
   }
   drawSolidContacts(dl, cam, pic);
+  drawCornerNudges(dl, cam, pic);
   if (pic.selected && *pic.selected < pic.bodies.size()) {
     const std::size_t i = *pic.selected;
     const Rect r = i < pic.renderRects.size() ? pic.renderRects[i] : pic.bodies[i].rect;

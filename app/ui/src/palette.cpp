@@ -36,6 +36,7 @@ std::span<const LegendEntry> legend() {
       {kCarried, Swatch::arrow, "carried by a solid", false, kWithMovingSolids},
       {kPushed, Swatch::arrow, "pushed by a solid", false, kWithMovingSolids},
       {kSquished, Swatch::fill, "squished", false, kWithMovingSolids},
+      {kNudge, Swatch::arrow, "corner nudge", false, kWithCornerNudge},
   };
   return kEntries;
 }

@@ -376,6 +376,7 @@ palette::LegendScope legendScopeOf(const Source& source) {
       if (b.oneWay) scope.has |= pal::kWithOneWay;
       // As the world view draws them: a body in the solid layer is a solid the scene moves.
       if (b.solid || b.layer == sim::kLayerSolid) scope.has |= pal::kWithMovingSolids;
+      if (b.maxNudge > 0.0) scope.has |= pal::kWithCornerNudge;
     }
   }
   return scope;

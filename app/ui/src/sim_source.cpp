@@ -350,6 +350,7 @@ WorldPicture SimSource::picture() {
   p.bodies = sim_.bodies();
   p.renderRects = renderRects_;
   p.contacts = sim_.solidContacts();
+  p.nudges = sim_.cornerNudges();
   p.selected = body_;
   p.moves = moves_;
   return p;

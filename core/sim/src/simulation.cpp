@@ -95,6 +95,7 @@ std::optional<std::size_t> Simulation::solidOf(ItemId id) const {
 void Simulation::build(SceneSetup setup) {
   events_.clear();
   contacts_.clear();
+  nudges_.clear();
   world_ = World(setup.cellSize);
   gravity_ = setup.gravity;
   rules_ = std::move(setup.rules);
@@ -214,6 +215,7 @@ void Simulation::stepOrThrow(double dt) {
   traceValid_ = false;
   events_.clear();
   contacts_.clear();
+  nudges_.clear();
   TickContext ctx = context(dt);
   if (rules_) {
     rules_->control(ctx);
@@ -305,7 +307,7 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
     // tv::moveCornered keeps no trace: a corrected body's moves are not traced.
     const bool traced = traced_ && *traced_ == i && b.maxNudge == 0.0;
     if (traced) trace_.clear();
-    const MoveResult r = b.maxNudge > 0.0 ? moveCornered(b.item, goal, b.maxNudge, filter)
+    const MoveResult r = b.maxNudge > 0.0 ? moveCornered(i, goal, filter)
                                           : mover_.move(world_, b.item, goal, filter,
                                                         traced ? &trace_ : nullptr);
     b.rect = world_.rect(b.item);
@@ -326,12 +328,15 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
   }
 }
 
-MoveResult Simulation::moveCornered(ItemId item, Vec2 goal, double maxNudge,
-                                    const Filter& filter) {
+MoveResult Simulation::moveCornered(std::size_t body, Vec2 goal, const Filter& filter) {
   CornerOptions o;
   o.filter = filter;
-  o.maxNudge = maxNudge;
-  CornerMove m = tv::moveCornered(world_, item, goal, o);
+  o.maxNudge = bodies_[body].maxNudge;
+  CornerMove m = tv::moveCornered(world_, bodies_[body].item, goal, o);
+  if (m.nudged) {
+    const Rect at = m.nudge.hit.itemRect.at(m.nudge.hit.touch);
+    nudges_.push_back({body, m.nudge.hit.other, at, at.at({at.x + m.nudge.dx, at.y})});
+  }
   cornered_ = std::move(m.collisions);  // MoveResult's collisions are a view: kept here
   MoveResult r;
   r.position = m.position;
@@ -433,6 +438,7 @@ void Simulation::record() {
   s.counters = counters_;
   s.traceStats = traceStats_;
   s.contacts = contacts_;
+  s.nudges = nudges_;
   // Only the pixel mover keeps state between moves (its sub-pixel remainders); copying the
   // others would cost a little every tick and restore nothing.
   s.hasMover = mover_.spec().kind == MoverKind::pixel;
@@ -457,6 +463,7 @@ void Simulation::restore(std::uint64_t t) {
   counters_ = s.counters;
   traceStats_ = s.traceStats;
   contacts_ = s.contacts;
+  nudges_ = s.nudges;
   if (s.hasMover) mover_ = s.mover;
   tick_ = t;
   traceValid_ = false;

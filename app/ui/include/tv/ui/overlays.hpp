@@ -63,6 +63,8 @@ struct WorldPicture {
   /// What the moving solids did to bodies in the last tick (a scene's: carried, pushed,
   /// squished); drawn over the bodies in their own colours.
   std::span<const sim::SolidContact> contacts;
+  /// The corner corrections made in the last tick (a scene's bodies with Body::maxNudge).
+  std::span<const sim::CornerNudgeAt> nudges;
   std::optional<std::size_t> selected;
   /// The selected body's recent moves, oldest first; the last is drawn in full.
   std::span<const TracedMove> moves;

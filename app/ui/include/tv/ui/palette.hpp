@@ -60,6 +60,9 @@ inline constexpr ImU32 kCarried = IM_COL32(110, 190, 255, 255);
 inline constexpr ImU32 kPushed = IM_COL32(255, 120, 170, 255);
 /// A body a moving solid pressed against something that would not give (a squish): filled.
 inline constexpr ImU32 kSquished = IM_COL32(210, 30, 80, 255);
+/// A corner correction (tv::moveCornered): the body where it met a ceiling's corner (dashed)
+/// and beside it, nudged, with an arrow.
+inline constexpr ImU32 kNudge = IM_COL32(0, 240, 0, 255);
 
 // -- where the body is drawn -------------------------------------------------------------------
 inline constexpr ImU32 kPhysics = IM_COL32(80, 220, 255, 255);
@@ -103,19 +106,20 @@ struct LegendEntry {
   /// Only a recording's or a live game's items are drawn so (a category's colour): a scene's
   /// legend leaves it out.
   bool recordedOnly = false;
-  /// Only drawn where there are such things (kWithOneWay, kWithMovingSolids): other views
-  /// leave it out.
+  /// Only drawn where there are such things (kWithOneWay, kWithMovingSolids,
+  /// kWithCornerNudge): other views leave it out.
   std::uint8_t onlyWith = 0;
 };
 
 inline constexpr std::uint8_t kWithOneWay = 1;        ///< a one-way side in the view's world
 inline constexpr std::uint8_t kWithMovingSolids = 2;  ///< a solid the scene moves
+inline constexpr std::uint8_t kWithCornerNudge = 4;   ///< a body with corner correction
 
 /// Which of the legend's optional entries a view lists: only those it can draw, so the legend
 /// takes no height from the view for colours that cannot appear in it.
 struct LegendScope {
   bool recorded = false;  ///< a recording's or a live game's view
-  std::uint8_t has = 0;   ///< what its world has: kWithOneWay, kWithMovingSolids
+  std::uint8_t has = 0;   ///< what its world has: kWithOneWay, kWithMovingSolids, ...
   [[nodiscard]] bool shows(const LegendEntry& e) const {
     return (!e.recordedOnly || recorded) && (e.onlyWith & has) == e.onlyWith;
   }

@@ -91,6 +91,14 @@ struct SolidContact {
   Rect to;    ///< the body after it (a squished body: where it was pressed)
 };
 
+/// A corner correction made in a tick (tv::moveCornered): a body nudged round a ceiling's corner.
+struct CornerNudgeAt {
+  std::size_t body = 0;  ///< the body nudged
+  ItemId ceiling;        ///< the ceiling whose corner it clipped
+  Rect from;             ///< the body where it met the corner
+  Rect to;               ///< the body nudged beside it (from, moved by dx)
+};
+
 /// The velocity after one collision, by the collision's response (all in px/s):
 /// - touch stops the body: zero velocity;
 /// - slide zeroes the component along the normal, if the velocity points into the obstacle;
