@@ -55,8 +55,10 @@ unset GALLIUM_DRIVER LIBGL_ALWAYS_SOFTWARE
   echo "Colours: grey solids, teal bodies (dark once stopped), blue cells shaded by item count,"
   echo "yellow cells the traced move visited, magenta candidates, white sweep, light-blue hull,"
   echo "violet substeps, red hits (rect at touch, normal, touch point), green response targets,"
-  echo "cyan/orange/yellow the physics, render and floored-pixel positions. The legend in every"
-  echo "picture says the same."
+  echo "cyan/orange/yellow the physics, render and floored-pixel positions; where a scene has them,"
+  echo "brown moving solids, a dashed lime line on a one-way side, and the bodies a moving solid"
+  echo "carried (blue), pushed (pink) or squished (crimson) that tick, and green corner nudges."
+  echo "The legend in every picture says the same."
 } > "$readme"
 
 count=0

@@ -5,11 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
+#include <string_view>
 #include <string>
 
 #include "imgui.h"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/overlays.hpp"
+#include "tv/ui/palette.hpp"
+#include "tv/ui/panels.hpp"
 #include "tv/ui/session.hpp"
 #include "tv/ui/sim_source.hpp"
 #include "tv/ui/view.hpp"
@@ -46,6 +50,25 @@ class ImGuiFixture : public ::testing::Test {
     return dl.VtxBuffer.Size;
   }
 };
+
+// Every vertex colour a picture's drawing uses.
+std::set<ImU32> coloursIn(const Camera& cam, const WorldPicture& pic) {
+  ImDrawList dl(ImGui::GetDrawListSharedData());
+  dl._ResetForNewFrame();
+  dl.PushClipRectFullScreen();
+  dl.PushTextureID(ImGui::GetIO().Fonts->TexID);
+  drawWorld(dl, cam, pic, Overlays{});
+  std::set<ImU32> out;
+  for (const ImDrawVert& v : dl.VtxBuffer) out.insert(v.col);
+  return out;
+}
+
+std::unique_ptr<SimSource> sceneAt(std::string_view name, std::uint64_t tick) {
+  const sim::SceneDef& s = sim::findScene(name);
+  auto source = std::make_unique<SimSource>(s, s.defaults(), MoverSpec{});
+  source->advanceTo(tick, 0.0);
+  return source;
+}
 
 std::unique_ptr<SimSource> crowd() {
   const sim::SceneDef& s = sim::findScene("crowd");
@@ -167,6 +190,81 @@ TEST_F(ImGuiFixture, NearbyStartAndGoalMarkersEachKeepALabel) {
   bool merged = false;
   for (const auto& [y, l] : labelsFor(50)) merged |= l.text.find("start, goal") != std::string::npos;
   EXPECT_TRUE(merged);
+}
+
+// Lifts, crushers and doors (lift-crush, tick 3): the moving solids in their own fill, and the
+// bodies they carried, pushed and squished that tick in theirs. A scene without moving solids
+// (bullets-wall) draws none of those colours: the negative control.
+TEST_F(ImGuiFixture, WhatMovingSolidsDidIsDrawnInItsOwnColours) {
+  const auto lifts = sceneAt("lift-crush", 3);
+  const sim::Simulation& sim = lifts->simulation();
+  ASSERT_FALSE(sim.solidContacts().empty());
+  Camera cam;
+  cam.frame(sim.camera(), {0, 0}, {1280, 720});
+  const std::set<ImU32> drawn = coloursIn(cam, lifts->picture());
+  for (const ImU32 c : {palette::kMovingSolid, palette::kCarried, palette::kPushed,
+                        palette::kSquished}) {
+    EXPECT_TRUE(drawn.count(c)) << std::hex << c;
+  }
+  EXPECT_FALSE(drawn.count(palette::kOneWay));  // lift-crush has no one-way side
+
+  const auto oneWay = sceneAt("one-way-rise", 3);
+  cam.frame(oneWay->simulation().camera(), {0, 0}, {1280, 720});
+  EXPECT_TRUE(coloursIn(cam, oneWay->picture()).count(palette::kOneWay));
+
+  // A corner correction (corner-nudge, tick 4: jumps meeting the ceilings), in its own colour;
+  // none without correction.
+  const auto nudged = sceneAt("corner-nudge", 4);
+  ASSERT_FALSE(nudged->simulation().cornerNudges().empty());
+  cam.frame(nudged->simulation().camera(), {0, 0}, {1280, 720});
+  EXPECT_TRUE(coloursIn(cam, nudged->picture()).count(palette::kNudge));
+  {
+    const sim::SceneDef& def = sim::findScene("corner-nudge");
+    sim::Params p = def.defaults();
+    p.set("correct", 0);
+    SimSource off(def, p, MoverSpec{});
+    off.advanceTo(4, 0.0);
+    EXPECT_FALSE(coloursIn(cam, off.picture()).count(palette::kNudge));
+  }
+
+  const auto bullets = sceneAt("bullets-wall", 2);
+  cam.frame(bullets->simulation().camera(), {0, 0}, {1280, 720});
+  const std::set<ImU32> plain = coloursIn(cam, bullets->picture());
+  for (const ImU32 c : {palette::kMovingSolid, palette::kOneWay, palette::kCarried,
+                        palette::kPushed, palette::kSquished, palette::kNudge}) {
+    EXPECT_FALSE(plain.count(c)) << std::hex << c;
+  }
+}
+
+// The legend lists the colours of moving solids and one-way sides only in a view that can draw
+// them (each entry takes height from the world view); elsewhere it is the legend every other
+// golden was drawn with.
+TEST_F(ImGuiFixture, TheLegendNamesPlatformColoursOnlyWhereTheSceneHasThem) {
+  const auto shown = [](const Source& src) {
+    std::vector<std::string> labels;
+    const palette::LegendScope scope = legendScopeOf(src);
+    for (const palette::LegendEntry& e : palette::legend())
+      if (scope.shows(e)) labels.emplace_back(e.label);
+    return labels;
+  };
+  const auto has = [](const std::vector<std::string>& l, std::string_view label) {
+    return std::find(l.begin(), l.end(), label) != l.end();
+  };
+  const auto plain = shown(*sceneAt("bullets-wall", 0));
+  const auto lifts = shown(*sceneAt("lift-crush", 0));
+  const auto oneWay = shown(*sceneAt("one-way-rise", 0));
+  for (const char* label :
+       {"moving solid", "one-way side", "carried by a solid", "pushed by a solid", "squished"}) {
+    EXPECT_FALSE(has(plain, label)) << label;
+    EXPECT_TRUE(has(oneWay, label)) << label;
+    EXPECT_EQ(has(lifts, label), std::string_view(label) != "one-way side") << label;
+  }
+  EXPECT_FALSE(has(plain, "corner nudge"));
+  EXPECT_FALSE(has(lifts, "corner nudge"));
+  EXPECT_TRUE(has(shown(*sceneAt("corner-nudge", 0)), "corner nudge"));
+  // The platform entries come after the others: without them, the same list in the same order.
+  ASSERT_EQ(lifts.size(), plain.size() + 4);
+  EXPECT_TRUE(std::equal(plain.begin(), plain.end(), lifts.begin()));
 }
 
 }  // namespace

@@ -133,6 +133,15 @@ TEST_F(DebuggerDriver, NoTextIsCutAtAPanelsEdge) {
       {1024, 640, {"--scene", "bullets-wall", "--tab", "failures"}},
       // Three panels: "pushed back out of floor tile 2" is wider than each.
       {1024, 640, {"--scene", "seam-walk", "--compare", "discrete,substep-discrete,continuous"}},
+      // Moving solids and one-way sides: the legend's five more entries, the longer verdict.
+      {1280, 720, {"--scene", "lift-crush", "--mover", "continuous", "--tick", "3", "--body",
+                   "3", "--view", "-8,-40,456,400"}},
+      {1024, 640, {"--scene", "lift-crush", "--mover", "continuous", "--tick", "3", "--body",
+                   "3", "--view", "-8,-40,456,400", "--carry", "0"}},
+      {1024, 640, {"--scene", "one-way-rise", "--compare", "discrete,continuous", "--tick", "3",
+                   "--body", "2"}},
+      {1024, 640, {"--scene", "corner-nudge", "--mover", "continuous", "--tick", "4", "--body",
+                   "4", "--view", "100,30,290,100"}},
   };
   for (const Layout& c : cases) {
     resize(c.w, c.h);

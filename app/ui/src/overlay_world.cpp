@@ -85,6 +85,54 @@ void drawCellCounts(ImDrawList& dl, const Camera& cam, const World& world) {
   });
 }
 
+namespace {
+
+// A one-way solid's blocking side, its top: a dashed line along it, drawn on the edge so that a
+// rider standing there sits on the line.
+void drawOneWaySide(ImDrawList& dl, const Camera& cam, const Rect& r) {
+  const ImVec2 a = cam.toScreenMin(r), b = cam.toScreenMax(r);
+  detail::dashedLine(dl, {a.x, a.y + 1.0f}, {b.x, a.y + 1.0f}, pal::kOneWay, 5.0f, 2.0f);
+}
+
+// What moving solids did this tick: a carried or pushed body outlined with an arrow from where
+// it was to where the solid put it, a squished one filled. A body squished by one solid and
+// carried by another shows the squish (drawn last).
+void drawSolidContacts(ImDrawList& dl, const Camera& cam, const WorldPicture& pic) {
+  for (const sim::SolidAct act :
+       {sim::SolidAct::carried, sim::SolidAct::pushed, sim::SolidAct::squished}) {
+    for (const sim::SolidContact& c : pic.contacts) {
+      if (c.act != act || c.body >= pic.bodies.size()) continue;
+      const Rect now = c.body < pic.renderRects.size() ? pic.renderRects[c.body]
+                                                        : pic.bodies[c.body].rect;
+      if (!cam.sees(now) && !cam.sees(c.from)) continue;
+      if (act == sim::SolidAct::squished) {
+        detail::fill(dl, cam, c.to, pal::kSquished);
+        detail::outline(dl, cam, c.to, pal::kSquished, 2.0f);
+        continue;
+      }
+      const ImU32 colour = act == sim::SolidAct::carried ? pal::kCarried : pal::kPushed;
+      detail::outline(dl, cam, now, colour, 2.0f);
+      const ImVec2 from = cam.toScreen(c.from.center()), to = cam.toScreen(c.to.center());
+      const float dx = to.x - from.x, dy = to.y - from.y;
+      if (dx * dx + dy * dy >= 36.0f) detail::arrow(dl, from, to, colour, 1.5f);
+    }
+  }
+}
+
+// Corner corrections this tick: the body where it met the corner, dashed, and an arrow to where
+// the nudge put it, outlined.
+void drawCornerNudges(ImDrawList& dl, const Camera& cam, const WorldPicture& pic) {
+  for (const sim::CornerNudgeAt& n : pic.nudges) {
+    if (!cam.sees(n.from) && !cam.sees(n.to)) continue;
+    detail::dashedOutline(dl, cam, n.from, pal::kNudge);
+    detail::outline(dl, cam, n.to, pal::kNudge, 2.0f);
+    detail::arrow(dl, cam.toScreen(n.from.center()), cam.toScreen(n.to.center()), pal::kNudge,
+                  1.5f);
+  }
+}
+
+}  // namespace
+
 void drawSolids(ImDrawList& dl, const Camera& cam, std::span<const sim::Solid> solids) {
   // Edges only once a tile is big enough on screen that they do not swallow its fill.
   const bool edges = solids.empty() || cam.toScreenLength(solids.front().rect.w) >= 6.0f;
@@ -92,6 +140,7 @@ void drawSolids(ImDrawList& dl, const Camera& cam, std::span<const sim::Solid> s
     if (!cam.sees(s.rect)) continue;
     detail::fill(dl, cam, s.rect, pal::kSolid);
     if (edges) detail::outline(dl, cam, s.rect, pal::kSolidEdge);
+    if (s.oneWay) drawOneWaySide(dl, cam, s.rect);
   }
 }
 
@@ -101,8 +150,15 @@ void drawBodies(ImDrawList& dl, const Camera& cam, const WorldPicture& pic) {
     const Rect r = i < pic.renderRects.size() ? pic.renderRects[i] : b.rect;
     if (!cam.sees(r)) continue;
     const ImU32 own = i < pic.bodyFills.size() ? pic.bodyFills[i] : 0;
-    detail::fill(dl, cam, r, own != 0 ? own : b.active ? pal::kBody : pal::kBodyIdle);
+    // A body in the solid layer is a solid the scene moves (a lift, a door), moved by
+    // tv::moveSolid or, in a scene's naive control, teleported by its rules.
+    const bool moving = b.solid || b.layer == sim::kLayerSolid;
+    detail::fill(dl, cam, r,
+                 own != 0 ? own : moving ? pal::kMovingSolid : b.active ? pal::kBody : pal::kBodyIdle);
+    if (b.oneWay) drawOneWaySide(dl, cam, r);
   }
+  drawSolidContacts(dl, cam, pic);
+  drawCornerNudges(dl, cam, pic);
   if (pic.selected && *pic.selected < pic.bodies.size()) {
     const std::size_t i = *pic.selected;
     const Rect r = i < pic.renderRects.size() ? pic.renderRects[i] : pic.bodies[i].rect;

@@ -31,6 +31,12 @@ std::span<const LegendEntry> legend() {
       {kPhysics, Swatch::outline, "physics position"},
       {kRender, Swatch::outline, "render position"},
       {kPixel, Swatch::outline, "floored pixel"},
+      {kMovingSolid, Swatch::fill, "moving solid", false, kWithMovingSolids},
+      {kOneWay, Swatch::line, "one-way side", false, kWithOneWay},
+      {kCarried, Swatch::arrow, "carried by a solid", false, kWithMovingSolids},
+      {kPushed, Swatch::arrow, "pushed by a solid", false, kWithMovingSolids},
+      {kSquished, Swatch::fill, "squished", false, kWithMovingSolids},
+      {kNudge, Swatch::arrow, "corner nudge", false, kWithCornerNudge},
   };
   return kEntries;
 }

@@ -364,12 +364,30 @@ void hudContents(const Source& source, const DebuggerState& st) {
   }
 }
 
-int legendColumns(float width, bool recorded) {
+palette::LegendScope legendScopeOf(const Source& source) {
+  palette::LegendScope scope;
+  const SimSource* sim = source.sim();
+  scope.recorded = sim == nullptr;
+  if (sim) {
+    const sim::Simulation& s = sim->simulation();
+    for (const sim::Solid& x : s.solids())
+      if (x.oneWay) scope.has |= pal::kWithOneWay;
+    for (const sim::Body& b : s.bodies()) {
+      if (b.oneWay) scope.has |= pal::kWithOneWay;
+      // As the world view draws them: a body in the solid layer is a solid the scene moves.
+      if (b.solid || b.layer == sim::kLayerSolid) scope.has |= pal::kWithMovingSolids;
+      if (b.maxNudge > 0.0) scope.has |= pal::kWithCornerNudge;
+    }
+  }
+  return scope;
+}
+
+int legendColumns(float width, palette::LegendScope scope) {
   // A column holds the swatch and the widest label shown, and never less than ~150 px (the
   // scene legend's columns, whose labels are short).
   float widest = 0.0f;
   for (const pal::LegendEntry& e : pal::legend()) {
-    if (e.recordedOnly && !recorded) continue;
+    if (!scope.shows(e)) continue;
     widest = std::max(widest, ImGui::CalcTextSize(e.label).x);
   }
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -378,10 +396,10 @@ int legendColumns(float width, bool recorded) {
   return std::clamp(static_cast<int>(width / column), 1, 8);
 }
 
-void legendContents(int columns, bool recorded) {
+void legendContents(int columns, palette::LegendScope scope) {
   if (!ImGui::BeginTable("legend", columns)) return;
   for (const pal::LegendEntry& e : pal::legend()) {
-    if (e.recordedOnly && !recorded) continue;
+    if (!scope.shows(e)) continue;
     ImGui::TableNextColumn();
     const ImVec2 p = ImGui::GetCursorScreenPos();
     const float s = ImGui::GetTextLineHeight();

@@ -45,7 +45,7 @@ const char* roleName(sim::BodyRole r) {
 }
 
 std::uint64_t failureCount(const sim::Counters& c) {
-  return c.tunnelled + c.escapes + c.overlaps + c.jitter + c.snags;
+  return c.tunnelled + c.escapes + c.overlaps + c.jitter + c.snags + c.drops + c.pops;
 }
 
 SimSource::SimSource(const sim::SceneDef& scene, const sim::Params& params, MoverSpec mover,
@@ -349,6 +349,8 @@ WorldPicture SimSource::picture() {
   p.solids = sim_.solids();
   p.bodies = sim_.bodies();
   p.renderRects = renderRects_;
+  p.contacts = sim_.solidContacts();
+  p.nudges = sim_.cornerNudges();
   p.selected = body_;
   p.moves = moves_;
   return p;

@@ -280,6 +280,20 @@ Verdict verdictOf(const SimSource& source, std::span<Source* const> all, bool wi
     std::snprintf(num, sizeof num, "%s %" PRIu64, scene.missesWord.c_str(), c.misses);
     clauses.emplace_back(num);
   }
+  // Scenes of moving solids: riders dropped or popped are failures; squishes are what a solid
+  // pressing a body against a wall should report, counted but not against the mover.
+  const auto bodies = sim.bodies();
+  const bool solids = std::any_of(bodies.begin(), bodies.end(), [](const sim::Body& b) {
+    return b.solid || b.layer == sim::kLayerSolid;
+  });
+  if (solids || anyPanel(all, &sim::Counters::drops) || anyPanel(all, &sim::Counters::pops)) {
+    std::snprintf(num, sizeof num, "drops %" PRIu64 ", pops %" PRIu64, c.drops, c.pops);
+    clauses.emplace_back(num);
+  }
+  if (c.squishes > 0 || anyPanel(all, &sim::Counters::squishes)) {
+    std::snprintf(num, sizeof num, "squished %" PRIu64, c.squishes);
+    clauses.emplace_back(num);
+  }
   if (clauses.empty()) {
     std::snprintf(num, sizeof num, "nothing failed in %" PRIu64 " moves", c.moves);
     clauses.emplace_back(num);
@@ -329,10 +343,10 @@ void onePanel(Session& s, ViewState& v, ImVec2 origin, ImVec2 size, float side, 
     st.coveredTop = ImGui::GetWindowPos().y - origin.y + ImGui::GetWindowHeight() + kMargin;
   }
   ImGui::End();
-  const bool recorded = src.sim() == nullptr;
+  const palette::LegendScope scope = legendScopeOf(src);
   st.coveredBottom = detail::legendOverlay(
       origin, {worldW, size.y},
-      std::min(worldW > 700.0f ? 4 : 3, legendColumns(worldW - 2 * kMargin, recorded)), recorded);
+      std::min(worldW > 700.0f ? 4 : 3, legendColumns(worldW - 2 * kMargin, scope)), scope);
   drawColumn(s, v, {origin.x + worldW, origin.y, side, size.y}, a);
 }
 
@@ -476,8 +490,8 @@ void sideBySide(Session& s, ViewState& v, ImVec2 origin, ImVec2 size, float side
   float bottom = 0.0f;
   if (ImGui::Begin("Legend", nullptr, kOverlay)) {
     // Legend columns wide enough to keep its labels whole.
-    const bool recorded = s.primary().sim() == nullptr;
-    legendContents(legendColumns(panelsW, recorded), recorded);
+    const palette::LegendScope scope = legendScopeOf(s.primary());
+    legendContents(legendColumns(panelsW, scope), scope);
     bottom = ImGui::GetWindowHeight();
   }
   ImGui::End();

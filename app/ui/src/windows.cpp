@@ -21,12 +21,12 @@ bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size) {
   return open;
 }
 
-float legendOverlay(ImVec2 origin, ImVec2 size, int columns, bool recorded) {
+float legendOverlay(ImVec2 origin, ImVec2 size, int columns, palette::LegendScope scope) {
   ImGui::SetNextWindowBgAlpha(0.82f);
   place({origin.x + kMargin, origin.y + size.y - kMargin}, {size.x - 2 * kMargin, 0}, {0, 1});
   float covered = 0.0f;
   if (ImGui::Begin("Legend", nullptr, kOverlay)) {
-    legendContents(columns, recorded);
+    legendContents(columns, scope);
     covered = origin.y + size.y - ImGui::GetWindowPos().y + kMargin;
   }
   ImGui::End();

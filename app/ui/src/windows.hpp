@@ -3,6 +3,7 @@
 // from these.
 
 #include "imgui.h"
+#include "tv/ui/palette.hpp"
 
 namespace tv::ui::detail {
 
@@ -19,8 +20,8 @@ void place(ImVec2 pos, ImVec2 size, ImVec2 pivot = {0, 0});
 /// A borderless window that only hosts a world view; pair with ImGui::End().
 bool beginCanvas(const char* name, ImVec2 pos, ImVec2 size);
 /// The colour legend across the bottom of a world view at `origin` of `size`, in `columns`;
-/// returns how much of the view's bottom it covers. `recorded`: a recording's or a live game's
-/// view (legendContents).
-float legendOverlay(ImVec2 origin, ImVec2 size, int columns, bool recorded);
+/// returns how much of the view's bottom it covers. `scope`: the entries it lists
+/// (legendContents).
+float legendOverlay(ImVec2 origin, ImVec2 size, int columns, palette::LegendScope scope);
 
 }  // namespace tv::ui::detail

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "tv/corner.hpp"
 #include "tv/error.hpp"
 #include "tv/outcome.hpp"
 #include "tv/solid.hpp"
@@ -93,6 +94,8 @@ std::optional<std::size_t> Simulation::solidOf(ItemId id) const {
 
 void Simulation::build(SceneSetup setup) {
   events_.clear();
+  contacts_.clear();
+  nudges_.clear();
   world_ = World(setup.cellSize);
   gravity_ = setup.gravity;
   rules_ = std::move(setup.rules);
@@ -211,6 +214,8 @@ void Simulation::stepOrThrow(double dt) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
   traceValid_ = false;
   events_.clear();
+  contacts_.clear();
+  nudges_.clear();
   TickContext ctx = context(dt);
   if (rules_) {
     rules_->control(ctx);
@@ -267,8 +272,27 @@ void Simulation::moveSolids(double dt) {
     o.bodies = riders_;
     o.filter = filter;
     o.oneWay = b.oneWay;
+    const Rect before = b.rect;
     const SolidMove m = moveSolid(world_, b.item, b.rect.position() + b.velocity * dt, o);
     counters_.squishes += m.squished.size();
+    const std::size_t solid = static_cast<std::size_t>(&b - bodies_.data());
+    // Each body once, by what mattered most: squished over pushed over carried. A rising solid
+    // lifts its riders by pushing them (they are in its way); standing on it, they were carried.
+    const auto note = [&](ItemId id, SolidAct act) {
+      const std::int32_t i = id.index < bodyBySlot_.size() ? bodyBySlot_[id.index] : -1;
+      if (i < 0) return;
+      const auto k = static_cast<std::size_t>(i);
+      for (const SolidContact& c : contacts_)
+        if (c.solid == solid && c.body == k) return;
+      const Rect& from = bodies_[k].rect;
+      const bool rode = from.y == placeBefore(before.y, from.h) && from.x < before.right() &&
+                        before.x < from.right();
+      if (act == SolidAct::pushed && rode) act = SolidAct::carried;
+      contacts_.push_back({solid, k, act, from, world_.rect(id)});
+    };
+    for (const Squish& q : m.squished) note(q.body, SolidAct::squished);
+    for (const ItemId id : m.pushed) note(id, SolidAct::pushed);
+    for (const ItemId id : m.carried) note(id, SolidAct::carried);
     for (Body& x : bodies_) x.rect = world_.rect(x.item);
   }
 }
@@ -280,9 +304,12 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
     if (!b.active || b.solid) continue;
     if (b.falls) b.velocity = b.velocity + gravity_ * dt;
     const Vec2 goal = b.rect.position() + b.velocity * dt;
-    const bool traced = traced_ && *traced_ == i;
+    // tv::moveCornered keeps no trace: a corrected body's moves are not traced.
+    const bool traced = traced_ && *traced_ == i && b.maxNudge == 0.0;
     if (traced) trace_.clear();
-    const MoveResult r = mover_.move(world_, b.item, goal, filter, traced ? &trace_ : nullptr);
+    const MoveResult r = b.maxNudge > 0.0 ? moveCornered(i, goal, filter)
+                                          : mover_.move(world_, b.item, goal, filter,
+                                                        traced ? &trace_ : nullptr);
     b.rect = world_.rect(b.item);
     b.velocity = respondVelocity(b.velocity, r.collisions);
     ++counters_.moves;
@@ -299,6 +326,22 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
                   r.collisions.size());
     }
   }
+}
+
+MoveResult Simulation::moveCornered(std::size_t body, Vec2 goal, const Filter& filter) {
+  CornerOptions o;
+  o.filter = filter;
+  o.maxNudge = bodies_[body].maxNudge;
+  CornerMove m = tv::moveCornered(world_, bodies_[body].item, goal, o);
+  if (m.nudged) {
+    const Rect at = m.nudge.hit.itemRect.at(m.nudge.hit.touch);
+    nudges_.push_back({body, m.nudge.hit.other, at, at.at({at.x + m.nudge.dx, at.y})});
+  }
+  cornered_ = std::move(m.collisions);  // MoveResult's collisions are a view: kept here
+  MoveResult r;
+  r.position = m.position;
+  r.collisions = cornered_;
+  return r;
 }
 
 void Simulation::noteCounted(const Counters& before, std::int64_t body, const Rect& start,
@@ -394,6 +437,8 @@ void Simulation::record() {
   }
   s.counters = counters_;
   s.traceStats = traceStats_;
+  s.contacts = contacts_;
+  s.nudges = nudges_;
   // Only the pixel mover keeps state between moves (its sub-pixel remainders); copying the
   // others would cost a little every tick and restore nothing.
   s.hasMover = mover_.spec().kind == MoverKind::pixel;
@@ -417,6 +462,8 @@ void Simulation::restore(std::uint64_t t) {
   }
   counters_ = s.counters;
   traceStats_ = s.traceStats;
+  contacts_ = s.contacts;
+  nudges_ = s.nudges;
   if (s.hasMover) mover_ = s.mover;
   tick_ = t;
   traceValid_ = false;

@@ -60,6 +60,11 @@ struct WorldPicture {
   /// Per body, a fill of its own (0: the usual body colours): a recording's items that never
   /// move but have a category.
   std::span<const ImU32> bodyFills;
+  /// What the moving solids did to bodies in the last tick (a scene's: carried, pushed,
+  /// squished); drawn over the bodies in their own colours.
+  std::span<const sim::SolidContact> contacts;
+  /// The corner corrections made in the last tick (a scene's bodies with Body::maxNudge).
+  std::span<const sim::CornerNudgeAt> nudges;
   std::optional<std::size_t> selected;
   /// The selected body's recent moves, oldest first; the last is drawn in full.
   std::span<const TracedMove> moves;

@@ -7,6 +7,7 @@
 /// what the response did, cyan/orange/yellow = physics vs render vs pixel.
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string_view>
 
@@ -47,6 +48,21 @@ inline constexpr ImU32 kHit = IM_COL32(255, 80, 80, 255);
 inline constexpr ImU32 kResponse = IM_COL32(110, 230, 110, 255);
 /// Earlier moves of the selected body, drawn faintly behind the last one.
 inline constexpr ImU32 kHistory = IM_COL32(240, 240, 240, 70);
+
+// -- moving solids and one-way platforms (tv/solid.hpp) ------------------------------------------
+/// A solid the scene moves (a lift, a crusher, a door, a moving platform): solid, but not still.
+inline constexpr ImU32 kMovingSolid = IM_COL32(150, 118, 78, 255);
+/// The side a one-way solid blocks from (its top): a dashed line along it.
+inline constexpr ImU32 kOneWay = IM_COL32(190, 255, 90, 255);
+/// A body a moving solid carried this tick (it rode it): outlined, an arrow from where it was.
+inline constexpr ImU32 kCarried = IM_COL32(110, 190, 255, 255);
+/// A body a moving solid pushed out of its way this tick: outlined, an arrow from where it was.
+inline constexpr ImU32 kPushed = IM_COL32(255, 120, 170, 255);
+/// A body a moving solid pressed against something that would not give (a squish): filled.
+inline constexpr ImU32 kSquished = IM_COL32(210, 30, 80, 255);
+/// A corner correction (tv::moveCornered): the body where it met a ceiling's corner (dashed)
+/// and beside it, nudged, with an arrow.
+inline constexpr ImU32 kNudge = IM_COL32(0, 240, 0, 255);
 
 // -- where the body is drawn -------------------------------------------------------------------
 inline constexpr ImU32 kPhysics = IM_COL32(80, 220, 255, 255);
@@ -90,6 +106,23 @@ struct LegendEntry {
   /// Only a recording's or a live game's items are drawn so (a category's colour): a scene's
   /// legend leaves it out.
   bool recordedOnly = false;
+  /// Only drawn where there are such things (kWithOneWay, kWithMovingSolids,
+  /// kWithCornerNudge): other views leave it out.
+  std::uint8_t onlyWith = 0;
+};
+
+inline constexpr std::uint8_t kWithOneWay = 1;        ///< a one-way side in the view's world
+inline constexpr std::uint8_t kWithMovingSolids = 2;  ///< a solid the scene moves
+inline constexpr std::uint8_t kWithCornerNudge = 4;   ///< a body with corner correction
+
+/// Which of the legend's optional entries a view lists: only those it can draw, so the legend
+/// takes no height from the view for colours that cannot appear in it.
+struct LegendScope {
+  bool recorded = false;  ///< a recording's or a live game's view
+  std::uint8_t has = 0;   ///< what its world has: kWithOneWay, kWithMovingSolids, ...
+  [[nodiscard]] bool shows(const LegendEntry& e) const {
+    return (!e.recordedOnly || recorded) && (e.onlyWith & has) == e.onlyWith;
+  }
 };
 
 /// Every colour above that means something in the world view, in reading order.

@@ -13,6 +13,7 @@
 #include "tv/sim/scene.hpp"
 #include "tv/ui/camera.hpp"
 #include "tv/ui/overlays.hpp"
+#include "tv/ui/palette.hpp"
 #include "tv/ui/source.hpp"
 
 namespace tv::ui {
@@ -112,11 +113,13 @@ void countersContents(const SimSource& source);
 /// Name, mover, frame and call, and paused, on one line; the timing and zoom on a second; a
 /// scene's verdict on a third; the source's notes after.
 void hudContents(const Source& source, const DebuggerState& state);
-/// Every palette entry with its swatch, in `columns` columns; a recording's or a live game's
-/// (`recorded`) also the entries only their items are drawn with.
-void legendContents(int columns, bool recorded);
+/// Every palette entry with its swatch that `scope` shows, in `columns` columns.
+void legendContents(int columns, palette::LegendScope scope);
 /// How many legend columns fit in `width` px with every label whole (1..8).
-[[nodiscard]] int legendColumns(float width, bool recorded);
+[[nodiscard]] int legendColumns(float width, palette::LegendScope scope);
+/// What a view of `source` can draw: a recording's categories, a scene's moving solids and
+/// one-way sides.
+[[nodiscard]] palette::LegendScope legendScopeOf(const Source& source);
 
 /// "tick" for a scene (its frames are ticks), "frame" otherwise.
 [[nodiscard]] const char* frameWord(const Source& source);

@@ -136,7 +136,8 @@ class SimSource final : public Source {
   std::vector<std::int32_t> bodyBySlot_;  // world slot -> body index, or -1
 };
 
-/// Tunnelled + escapes + overlaps + jitter + snags: the counts that mean a mover failed.
+/// Tunnelled + escapes + overlaps + jitter + snags + drops + pops: the counts that mean a mover
+/// failed (squishes do not: a solid pressing a body against a wall should report one).
 [[nodiscard]] std::uint64_t failureCount(const sim::Counters& c);
 
 /// "projectile", "walker"...: what a body is in its scene.

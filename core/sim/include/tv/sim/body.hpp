@@ -2,6 +2,7 @@
 /// What a simulation moves: bodies (an item of the world plus a velocity and a little state),
 /// and what it counts. Everything here is plain data, copied into the snapshot ring each tick.
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -41,6 +42,11 @@ struct Body {
   /// Solid from above only (a jump-through platform): a body meets it only if it was entirely
   /// above it when its move began; as a moving solid, it pushes nothing from below.
   bool oneWay = false;
+  /// Corner correction (tv/corner.hpp): when > 0, the body moves by tv::moveCornered with this
+  /// largest nudge (World::move's exact sweep, nudged round a ceiling corner it clips by at most
+  /// this much), whatever the simulation's mover; 0: by the mover. Its moves are not traced
+  /// (tv::moveCornered keeps no MoveTrace).
+  double maxNudge = 0.0;
 };
 
 /// What the scenes count. Each scene documents which counters it uses and what they mean;
@@ -67,6 +73,30 @@ struct Counters {
 
   /// Equal when every counter is.
   friend bool operator==(const Counters&, const Counters&) = default;
+};
+
+/// What a moving solid did to a body (tv::moveSolid's SolidMove, body by body).
+enum class SolidAct : std::uint8_t {
+  carried,   ///< it rode the solid (stood on it) and was moved along
+  pushed,    ///< it was in the solid's way and was pushed to its leading edge
+  squished,  ///< it was pressed between the solid and something that would not give
+};
+
+/// One thing a moving solid did in a tick: to which body, and from where to where.
+struct SolidContact {
+  std::size_t solid = 0;  ///< the moving solid's body index
+  std::size_t body = 0;   ///< the body it carried, pushed or squished
+  SolidAct act = SolidAct::carried;  ///< what the solid did to it
+  Rect from;  ///< the body before that solid's move
+  Rect to;    ///< the body after it (a squished body: where it was pressed)
+};
+
+/// A corner correction made in a tick (tv::moveCornered): a body nudged round a ceiling's corner.
+struct CornerNudgeAt {
+  std::size_t body = 0;  ///< the body nudged
+  ItemId ceiling;        ///< the ceiling whose corner it clipped
+  Rect from;             ///< the body where it met the corner
+  Rect to;               ///< the body nudged beside it (from, moved by dx)
 };
 
 /// The velocity after one collision, by the collision's response (all in px/s):

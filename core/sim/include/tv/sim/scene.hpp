@@ -145,8 +145,8 @@ class SceneRegistry {
 };
 
 /// The built-in scenes (bullets-wall, rest-wall, rest-floor, seam-walk, corner-graze,
-/// bounce-gap, bullets-enemies, platformer, crowd, bump-crowd). Built on first use, immutable
-/// after.
+/// bounce-gap, bullets-enemies, platformer, crowd, bump-crowd, one-way-rise, lift-crush,
+/// corner-nudge). Built on first use, immutable after.
 [[nodiscard]] const SceneRegistry& builtinScenes();
 /// `builtinScenes().find(name)`.
 [[nodiscard]] const SceneDef& findScene(std::string_view name);

@@ -192,6 +192,14 @@ class Simulation {
   /// What the rules counted in the last tick, body by body, in the order it happened (empty
   /// after a seek, a step back or a restart). Not part of the state; costs a few compares a move.
   [[nodiscard]] std::span<const TickEvent> events() const { return events_; }
+  /// What the moving solids (Body::solid) did in the last tick — each body they carried,
+  /// pushed or squished, solid by solid in body order, each solid's in the order tv::moveSolid
+  /// reports them (squishes, then pushes, then carries). Kept with each snapshot: a step back or
+  /// a seek shows that tick's. Not part of the state.
+  [[nodiscard]] std::span<const SolidContact> solidContacts() const { return contacts_; }
+  /// The corner corrections (Body::maxNudge) made in the last tick, in body order; kept with
+  /// each snapshot as solidContacts. Not part of the state.
+  [[nodiscard]] std::span<const CornerNudgeAt> cornerNudges() const { return nudges_; }
   /// Moves reporting more collisions than `n` are listed in events() (0, the default: none).
   void setManyCollisions(std::size_t n) { manyCollisions_ = n; }
   /// The threshold setManyCollisions set (0: off).
@@ -208,6 +216,8 @@ class Simulation {
     std::vector<BodyState> bodies;
     Counters counters;
     TraceStats traceStats;  // so stepping back through history does not count moves twice
+    std::vector<SolidContact> contacts;
+    std::vector<CornerNudgeAt> nudges;
     bool hasMover = false;
     Mover mover;  // only movers with per-item state (pixel); others keep none between moves
   };
@@ -218,6 +228,7 @@ class Simulation {
   void moveOneByOne(TickContext& ctx, double dt);
   void moveBatched(TickContext& ctx, double dt);
   void moveSolids(double dt);  // the bodies that are moving solids, by tv::moveSolid
+  MoveResult moveCornered(std::size_t body, Vec2 goal, const Filter& filter);
   void record();
   void restore(std::uint64_t t);
   void syncWorld(std::size_t i);
@@ -261,6 +272,9 @@ class Simulation {
   TraceStats traceStats_;
 
   std::vector<TickEvent> events_;
+  std::vector<SolidContact> contacts_;
+  std::vector<CornerNudgeAt> nudges_;
+  std::vector<Collision> cornered_;  // the last corner-corrected move's collisions
   std::size_t manyCollisions_ = 0;
   std::vector<BatchMove> batchMoves_;
   std::vector<ItemId> riders_;  // every body that is not a moving solid
