@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "debugger.hpp"
 #include "imgui.h"
 #include "imgui_internal.h"
@@ -187,14 +189,21 @@ inline int overlappingGlyphs(const std::string& window, std::string* where) {
 // drawnText(window): the text a window drew, rebuilt from its glyphs (app/drawn_text.hpp).
 using tvtest::drawnText;
 
-/// The sample platformer's first 240 frames, recorded once per test run into a scratch file.
+/// The sample platformer's first 240 frames, recorded once per test process into a scratch file
+/// of its own (ctest runs each test in a process, side by side: a shared file would be read by
+/// one while another rewrites it).
 inline const std::string& sampleRecording() {
   static const std::string path = [] {
-    const std::string p = ::testing::TempDir() + "tv_viewer_sample.tvrec";
+    const std::string p =
+        ::testing::TempDir() + "tv_viewer_sample_" + std::to_string(::getpid()) + ".tvrec";
     Recorder rec(p);
     (void)example::play(240, false, &rec);
     return p;
   }();
+  // Removed when the process ends.
+  static const struct Remove {
+    ~Remove() { std::remove(path.c_str()); }
+  } remove;
   return path;
 }
 

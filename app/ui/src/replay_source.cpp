@@ -125,6 +125,7 @@ void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
     // The frame on screen's own, for the inspector's call.
     if (d && f == frame_ && !divergence_) divergence_ = std::move(d);
     if (traced) {
+      t.mover = *moverNames_.emplace(t.mover).first;
       moves_.push_back({f, std::move(t)});
       callTraced_ = isCall;
     }

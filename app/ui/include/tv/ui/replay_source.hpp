@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -122,6 +123,9 @@ class ReplaySource final : public Source {
   std::vector<CallInfo> calls_;
   std::optional<ItemId> selected_;
   std::vector<TracedMove> moves_;
+  // The names the kept traces' `mover` views point into: a trace names its mover by a view of
+  // the mover's own name, and a seek rebuilds the replay's movers, so the views would dangle.
+  std::set<std::string, std::less<>> moverNames_;
   bool callTraced_ = false;
   bool primed_ = false;  // the replay stands at the end of frame_, nothing selected in it
   std::optional<Divergence> divergence_;
