@@ -226,10 +226,7 @@ void registerExtraMethods(lua_State* L, int methodsIdx) {
       {"stateHash", guarded<stateHash>},
       {nullptr, nullptr},
   };
-  for (const luaL_Reg* m = methods; m->name; ++m) {
-    lua_pushcfunction(L, m->func);
-    lua_setfield(L, methodsIdx, m->name);
-  }
+  setFunctions(L, methodsIdx, methods);
 }
 
 }  // namespace tvlua

@@ -281,6 +281,14 @@ void installFastPath(lua_State* L, int methodsIdx);
 /// Sets `fastPath` (true when installed) and `_capi` (the C functions the fast path replaced:
 /// move, check, getRect, go, getCollision; nil without it) in the table at moduleIdx.
 void pushFastPathInfo(lua_State* L, int moduleIdx);
+/// Sets each of `fns` (ended by {nullptr, nullptr}) as a field of the table at `tableIdx` (an
+/// absolute index): Lua 5.1 has no luaL_setfuncs.
+inline void setFunctions(lua_State* L, int tableIdx, const luaL_Reg* fns) {
+  for (const luaL_Reg* f = fns; f->name; ++f) {
+    lua_pushcfunction(L, f->func);
+    lua_setfield(L, tableIdx, f->name);
+  }
+}
 void registerExtraMethods(lua_State* L, int methodsIdx);   // tunnelvision's additions
 void registerPlatformMethods(lua_State* L, int methodsIdx);  // contacts, ground, moveCornered
 void registerRecordingMethods(lua_State* L, int methodsIdx);  // startRecording, frame...

@@ -307,10 +307,7 @@ void registerPlatformMethods(lua_State* L, int methodsIdx) {
       {"moveCornered", guarded<moveCornered>},
       {nullptr, nullptr},
   };
-  for (const luaL_Reg* m = methods; m->name; ++m) {
-    lua_pushcfunction(L, m->func);
-    lua_setfield(L, methodsIdx, m->name);
-  }
+  setFunctions(L, methodsIdx, methods);
 }
 
 }  // namespace tvlua

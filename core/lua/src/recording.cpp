@@ -167,10 +167,7 @@ void registerRecordingMethods(lua_State* L, int methodsIdx) {
       {"label", guarded<label>},
       {nullptr, nullptr},
   };
-  for (const luaL_Reg* m = methods; m->name; ++m) {
-    lua_pushcfunction(L, m->func);
-    lua_setfield(L, methodsIdx, m->name);
-  }
+  setFunctions(L, methodsIdx, methods);
 }
 
 }  // namespace tvlua

@@ -542,10 +542,7 @@ void registerWorldMethods(lua_State* L, int methodsIdx) {
       {"addResponse", guarded<addResponse>},
       {nullptr, nullptr},
   };
-  for (const luaL_Reg* m = methods; m->name; ++m) {
-    lua_pushcfunction(L, m->func);
-    lua_setfield(L, methodsIdx, m->name);
-  }
+  setFunctions(L, methodsIdx, methods);
 }
 
 }  // namespace tvlua
