@@ -107,7 +107,10 @@ TEST(BackgroundWriter, AGameFasterThanItsWriterWaitsAtTheBoundInsteadOfFillingMe
 }
 
 // Everything written into a pipe at `path`, read only once someone says go(): a disk that
-// stalls, so that the recorder's writer is still writing when the game dies.
+// stalls, so that the recorder's writer is still writing when the game dies. Its reader thread
+// starts only when asked, after the fork: a child forked while another thread holds a lock (the
+// sanitizer's allocator, while that thread starts up) inherits it held and hangs on its first
+// allocation.
 class SlowDisk {
  public:
   explicit SlowDisk(std::string path) : path_(std::move(path)) {
@@ -115,8 +118,18 @@ class SlowDisk {
     if (::mkfifo(path_.c_str(), 0600) != 0 || ::pipe(go_) != 0) {
       throw std::runtime_error("mkfifo " + path_);
     }
+  }
+  ~SlowDisk() {
+    go();
+    if (reader_.joinable()) reader_.join();
+    ::close(go_[0]);
+    ::close(go_[1]);
+    ::unlink(path_.c_str());
+  }
+  // The reader opens the pipe (the writer's open waits for it) and waits for go().
+  void startReading() {
     reader_ = std::thread([this] {
-      const int fd = ::open(path_.c_str(), O_RDONLY);  // waits for the writer to open it
+      const int fd = ::open(path_.c_str(), O_RDONLY);
       char c;
       (void)::read(go_[0], &c, 1);
       std::uint8_t buf[1 << 16];
@@ -127,13 +140,6 @@ class SlowDisk {
       }
       ::close(fd);
     });
-  }
-  ~SlowDisk() {
-    go();
-    if (reader_.joinable()) reader_.join();
-    ::close(go_[0]);
-    ::close(go_[1]);
-    ::unlink(path_.c_str());
   }
   [[nodiscard]] const std::string& path() const { return path_; }
   // The disk starts reading (from any process that shares this object's pipe).
@@ -155,9 +161,10 @@ class SlowDisk {
 // Runs `die` in a child process that records a crowd onto `disk`: 5 frames of 20000 moves
 // handed over (several times what a pipe holds, so the writer is stuck on the disk), then
 // `die`. With `flushOnCrash` the disk starts reading just before the child dies (the flush
-// must wait for it); without, only once the child is dead. Returns the child's wait status.
-int recordThenDie(const SlowDisk& disk, bool flushOnCrash, const std::function<void()>& die) {
-  const pid_t pid = fork();
+// must wait for it); without, only once the child is dead. Returns the child's wait status;
+// a child still alive after a minute is killed and reported, so a hang fails here, named.
+int recordThenDie(SlowDisk& disk, bool flushOnCrash, const std::function<void()>& die) {
+  const pid_t pid = fork();  // before any thread of this test starts
   if (pid == 0) {
     tv::RecorderOptions o;
     o.flushOnCrash = flushOnCrash;
@@ -172,8 +179,18 @@ int recordThenDie(const SlowDisk& disk, bool flushOnCrash, const std::function<v
     die();
     std::_Exit(99);  // not reached
   }
+  disk.startReading();
   int status = 0;
-  waitpid(pid, &status, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      ::kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      ADD_FAILURE() << "the recording child still ran after 60 s: killed";
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   return status;
 }
 
