@@ -894,7 +894,7 @@ void Debugger::run(Command c) {
       break;
     case Command::help:
       showHelp_ = !showHelp_;
-      helpPlacing_ = showHelp_ ? 3 : 0;
+      helpFollows_ = showHelp_;
       break;
     case Command::quit:
       quit_ = true;

@@ -69,7 +69,7 @@ class Debugger {
   void setPinned(bool pinned);
   void openHelp() {
     showHelp_ = true;
-    helpPlacing_ = 3;
+    helpFollows_ = true;
   }
   /// What a command does, as its key or menu item would (tests drive the debugger with it).
   void command(Command c) { run(c); }
@@ -196,7 +196,7 @@ class Debugger {
   double frameMs_ = 0.0;  // wall time per frame, smoothed, for the menu bar
   bool follow_ = false;
   bool showHelp_ = false;
-  int helpPlacing_ = 3;  // frames Help is still placed over the column's tabs (the layout settles)
+  bool helpFollows_ = true;  // Help stays over the column's tabs until the person moves it
   bool showSweep_ = false;
   bool showWhatIf_ = false;
   bool openPicker_ = false;

@@ -114,6 +114,24 @@ TEST_F(DebuggerDriver, At1024EveryPanelLineIsWholeAndHelpLeavesTheControlsInView
   EXPECT_FALSE(help.Overlaps(controls));
 }
 
+// Help sat where the column's tabs were when it opened: opening the controls' Overlays (or a
+// window resized) moved the tabs down and the controls ran under Help. It follows the tabs now,
+// until the person drags it.
+TEST_F(DebuggerDriver, HelpFollowsTheColumnsTabsWhenTheLayoutMoves) {
+  open({"--scene", "bullets-wall", "--tick", "2", "--body", "2"});
+  dbg().openHelp();
+  frames(3);
+  const ImVec2 first = dbg().view().tabsPos;
+  resize(1024, 640);
+  frames(3);  // the controls' height settles over a frame or two, as when Help opens
+  const ImVec2 tabs = dbg().view().tabsPos;
+  ASSERT_NE(tabs.x, first.x) << "the tabs did not move: the test shows nothing";
+  const ImRect help = windowRect("Help (F1)");
+  EXPECT_NEAR(help.Min.x, tabs.x, 1.0f);  // ImGui puts windows on whole pixels
+  EXPECT_NEAR(help.Min.y, tabs.y, 1.0f);
+  EXPECT_FALSE(help.Overlaps(windowRect("Scene and mover")));
+}
+
 // The scene picker cut its descriptions, and a recording's call lines were cut at the column's
 // edge; both wrap now.
 TEST_F(DebuggerDriver, PickerDescriptionsAndCallLinesAreWhole) {
