@@ -456,6 +456,7 @@ void Debugger::refreshLive() {
   if (l->run() != run) {
     // A new run: a game connected (again). Its world is a new one: frame it, trace its busiest,
     // and follow it as it comes (a pause was the last game's: the new one is not held).
+    playingBack_ = false;
     checks_.reset(*session_, false);
     traceBusiest();
     frameAll();
@@ -463,6 +464,7 @@ void Debugger::refreshLive() {
     paused_ = false;
     jumpToNewest_ = false;
   }
+  if (playingBack_) return;  // the person plays the kept frames: advance() moves through them
   if ((!paused_ || jumpToNewest_) && l->lastFrame() != currentTick()) {
     session_->goTo(l->lastFrame());
     jumpToNewest_ = jumpToNewest_ && currentTick() < l->lastFrame();
@@ -484,7 +486,8 @@ void Debugger::goTo(std::uint64_t f, bool stopAtEnd) {
 }
 
 void Debugger::advance(double seconds) {
-  if (paused_ || live()) return;  // a live game goes at its own pace (refreshLive)
+  // A live game goes at its own pace (refreshLive), unless what it sent is being played back.
+  if (paused_ || (live() && !playingBack_)) return;
   clock_ += seconds * speed_;
   const double step = session_->playSeconds();
   int n = 0;
@@ -501,11 +504,12 @@ void Debugger::advance(double seconds) {
   }
   if (n == kMaxFramesPerDraw) clock_ = 0.0;
   // Nothing more can happen: stop, so the interesting frames stay in reach.
-  if (session_->ended() && session_->frame() >= session_->lastFrame()) {
+  if ((session_->ended() || playingBack_) && session_->frame() >= session_->lastFrame()) {
     paused_ = true;
-    notice_ = isScene() ? "the scene ended at tick " + std::to_string(currentTick()) +
-                              " (Play runs it again)"
-                        : "the end of the recording (Play runs it again)";
+    notice_ = isScene()      ? "the scene ended at tick " + std::to_string(currentTick()) +
+                                   " (Play runs it again)"
+              : playingBack_ ? "the last frame the game sent (Play runs them again)"
+                             : "the end of the recording (Play runs it again)";
   }
 }
 
@@ -760,7 +764,10 @@ void Debugger::run(Command c) {
   switch (c) {
     case Command::pause: {
       notice_.clear();
-      if (ui::LiveSource* l = liveSource()) {
+      ui::LiveSource* l = liveSource();
+      // With no game connected, what it sent plays back as a recording does (below).
+      playingBack_ = l != nullptr && !l->connected();
+      if (l != nullptr && l->connected()) {
         // Pause holds the game at its next frame, where it allows it; either way the view
         // stops following. Play lets it go on and follows the newest frame again.
         if (paused_) {
@@ -774,10 +781,13 @@ void Debugger::run(Command c) {
         break;
       }
       // Play at the end plays it again, and says so, rather than pausing at once.
-      if (paused_ && session_->ended() && session_->frame() >= session_->lastFrame()) {
+      if (paused_ && (session_->ended() || playingBack_) &&
+          session_->frame() >= session_->lastFrame()) {
         const std::uint64_t end = currentTick();
         goTo(session_->firstFrame());
-        notice_ = std::string(isScene() ? "the scene had ended at tick " : "the recording ends at frame ") +
+        notice_ = std::string(isScene()      ? "the scene had ended at tick "
+                              : playingBack_ ? "the game's frames end at frame "
+                                             : "the recording ends at frame ") +
                   std::to_string(end) + ": playing again from " +
                   std::to_string(session_->firstFrame());
       }
@@ -789,8 +799,10 @@ void Debugger::run(Command c) {
       paused_ = true;
       notice_.clear();
       if (ui::LiveSource* l = liveSource()) {
-        // One more frame of the game, then held again; shown when it arrives.
-        if (l->controllable()) {
+        // One more frame of the game, then held again; shown when it arrives. With no game
+        // connected, the next of the frames it sent.
+        playingBack_ = !l->connected();
+        if (l->controllable() && l->connected()) {
           l->receiver().step();
           jumpToNewest_ = true;
         } else {

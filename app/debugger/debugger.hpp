@@ -191,6 +191,9 @@ class Debugger {
   bool updatesAsMoves_ = false;
 
   bool paused_ = true;
+  // Playing back the frames a live game sent after it left (Space with no game connected): the
+  // kept frames play as a recording's do, not followed to the newest.
+  bool playingBack_ = false;
   double speed_ = 1.0;
   double clock_ = 0.0;    // simulated seconds not yet drawn
   double frameMs_ = 0.0;  // wall time per frame, smoothed, for the menu bar

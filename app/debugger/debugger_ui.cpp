@@ -459,9 +459,11 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   };
   const bool scene = isScene();
   button("Back", Command::stepBack);
-  if (const ui::LiveSource* l = liveSource()) {
-    // A game that allows it is held and stepped from here; any game is followed or not.
-    if (l->controllable()) {
+  const ui::LiveSource* game = liveSource();
+  if (game != nullptr && game->connected()) {
+    // A game that allows it is held and stepped from here; any game is followed or not. (Once
+    // it has left, its frames play back as a recording's.)
+    if (game->controllable()) {
       button(paused_ ? "Resume game" : "Pause game", Command::pause);
       button("Step game", Command::step);
     } else {

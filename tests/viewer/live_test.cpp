@@ -175,6 +175,35 @@ TEST_F(LiveDriver, AGameThatConnectsAfterAPauseIsFollowed) {
   second.stop();
 }
 
+// Once the game has left, Space plays back the frames it sent, as a recording's: it answered
+// "cannot resume: no game is connected" and the buttons still offered to resume the game.
+TEST_F(LiveDriver, AfterTheGameLeavesSpacePlaysBackItsFrames) {
+  const std::string address = listen();
+  {
+    Recorder rec(gameTo(address, true));
+    tvtest::ThreadedGame game(rec);
+    ASSERT_TRUE(until([&] { return live().lastFrame() >= 40; }));
+    game.stop();
+    rec.close();
+  }
+  ASSERT_TRUE(until([&] { return live().ended(); }));
+  frames(2);
+  const std::string before = drawnText("Timeline");
+  EXPECT_EQ(before.find("Resume game"), std::string::npos) << before;
+  EXPECT_NE(before.find("Play (Space)"), std::string::npos) << before;
+  dbg().command(Command::restart);
+  const std::uint64_t first = dbg().currentTick();
+  ASSERT_LT(first, live().lastFrame());
+  dbg().command(Command::pause);  // Space
+  EXPECT_FALSE(dbg().paused());
+  frames(10);
+  EXPECT_GT(dbg().currentTick(), first) << "the kept frames did not play";
+  EXPECT_LT(dbg().currentTick(), live().lastFrame()) << "it jumped to the newest instead";
+  EXPECT_TRUE(dbg().message().empty()) << dbg().message();
+  dbg().command(Command::step);  // O: the next kept frame, not a step sent to no one
+  EXPECT_TRUE(dbg().message().empty()) << dbg().message();
+}
+
 // A port already taken is one clear message, and nothing else changes.
 TEST_F(LiveDriver, APortInUseIsRefusedNamingIt) {
   LiveReceiverOptions o;
