@@ -894,7 +894,13 @@ void Debugger::run(Command c) {
       }
       break;
     case Command::overlay:
-      view_.overlaid = !view_.overlaid;
+      // Only compared panels can be overlaid: flipping a setting nobody sees changed how the
+      // next what-if opened.
+      if (session_->comparing()) {
+        view_.overlaid = !view_.overlaid;
+      } else {
+        notice_ = "overlaid (V) is for compared movers: compare first (C, or W for a what-if)";
+      }
       break;
     case Command::sweep:
       showSweep_ = isScene() && !showSweep_;

@@ -156,6 +156,18 @@ TEST_F(DebuggerDriver, AMoverIsNotRunBesideItselfAndSharedFailuresAreNotNoFailur
   EXPECT_NE(all.find("failures are listed"), std::string::npos) << all;
 }
 
+// V in one panel showed nothing but flipped a hidden setting: the next what-if then opened
+// overlaid instead of beside. It says what it is for and changes nothing.
+TEST_F(DebuggerDriver, OverlaidIsOnlyForComparedMovers) {
+  open({"--scene", "bullets-wall", "--mover", "discrete", "--tick", "2"});
+  dbg().command(Command::overlay);
+  EXPECT_FALSE(dbg().view().overlaid);
+  EXPECT_NE(dbg().notice().find("compare first"), std::string::npos) << dbg().notice();
+  open({"--scene", "bullets-wall", "--compare", "discrete,continuous", "--tick", "2"});
+  dbg().command(Command::overlay);  // the control: compared, V overlays them
+  EXPECT_TRUE(dbg().view().overlaid);
+}
+
 // The scene picker cut its descriptions, and a recording's call lines were cut at the column's
 // edge; both wrap now.
 TEST_F(DebuggerDriver, PickerDescriptionsAndCallLinesAreWhole) {
