@@ -222,9 +222,12 @@ void inspectorContents(const Source& s, const FailureList* failures, std::size_t
     const ImGuiTreeNodeFlags open = k + 1 == moves.size() ? ImGuiTreeNodeFlags_DefaultOpen : 0;
     const auto failed = failureFor(s, tm, failures, panel);
     if (failed) ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kBad));
-    const bool shown = ImGui::TreeNodeEx("move", open, "%s %" PRIu64 " move by %s: %zu hits%s",
-                                         frameWord(s), tm.tick, std::string(tm.trace.mover).c_str(),
-                                         tm.trace.hits.size(), failed ? " (failed)" : "");
+    // A game's own World::move names no mover: "move", not "move by ".
+    const std::string by =
+        tm.trace.mover.empty() ? std::string() : " by " + std::string(tm.trace.mover);
+    const bool shown = ImGui::TreeNodeEx("move", open, "%s %" PRIu64 " move%s: %zu hits%s",
+                                         frameWord(s), tm.tick, by.c_str(), tm.trace.hits.size(),
+                                         failed ? " (failed)" : "");
     if (failed) ImGui::PopStyleColor();
     if (shown) {
       saidLine(whatHappened(tm.trace, s, failed ? &*failed : nullptr));
