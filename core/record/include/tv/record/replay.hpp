@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tv/corner.hpp"
 #include "tv/error.hpp"  // what they throw
 #include "tv/mover.hpp"
 #include "tv/record/calls.hpp"  // CallKind, the recorded calls
@@ -33,9 +34,13 @@ struct CallInfo {
   std::uint32_t index = 0;   ///< within its frame
   ItemId item;               ///< the item it concerns (invalid for project and the queries)
   std::uint64_t offset = 0;  ///< byte offset of its record in the file
-  Rect start;                ///< moves: the item before the call
-  Vec2 goal;                 ///< moves: what was asked
-  Vec2 position;             ///< moves: where the recording says it ended
+  Rect start;     ///< moves: the item before the call; cornerNudge: where it met the corner
+  Vec2 goal;      ///< moves: what was asked
+  Vec2 position;  ///< moves: where the recording says it ended; cornerNudge: where it was nudged
+  /// cornerNudge (the World calls before it were tv::moveCornered's correction): the ceiling
+  /// (`hit.other`, `hit.otherRect` as it stood), where the body met its corner (`hit.touch`,
+  /// `hit.itemRect` the body there; normal (0, 1)) and how far it was nudged (`dx`).
+  CornerNudge nudge;
   std::uint32_t hits = 0;    ///< moves: collisions recorded; queries: items found
   std::string mover;         ///< moverMove: the mover's name
   std::string summary;       ///< one line: "move player (12, 40) -> (15, 40): 2 hits"
@@ -55,6 +60,7 @@ struct RecordedItem {
   std::uint64_t moves = 0, hits = 0;  ///< counts over the whole recording
   /// @}
   double maxSpeed = 0.0;  ///< longest single move, in world units
+  std::uint64_t nudges = 0;  ///< corner corrections (tv::moveCornered) it was given
   std::uint64_t endedOverlapping = 0;  ///< moves that ended overlapping a solid (not ignored)
 };
 
