@@ -34,13 +34,14 @@ struct CallInfo {
   std::uint32_t index = 0;   ///< within its frame
   ItemId item;               ///< the item it concerns (invalid for project and the queries)
   std::uint64_t offset = 0;  ///< byte offset of its record in the file
-  Rect start;     ///< moves: the item before the call; cornerNudge: where it met the corner
-  Vec2 goal;      ///< moves: what was asked
-  Vec2 position;  ///< moves: where the recording says it ended; cornerNudge: where it was nudged
   /// cornerNudge (the World calls before it were tv::moveCornered's correction): the ceiling
-  /// (`hit.other`, `hit.otherRect` as it stood), where the body met its corner (`hit.touch`,
-  /// `hit.itemRect` the body there; normal (0, 1)) and how far it was nudged (`dx`).
+  /// (`hit.other`, `hit.otherRect` as it stood), where the body met its corner (`hit.touch`;
+  /// `hit.itemRect` is the body there, and also `start`; normal (0, 1)) and how far it was
+  /// nudged (`dx`; `position` is where that put it).
   CornerNudge nudge;
+  Rect start;                ///< moves: the item before the call
+  Vec2 goal;                 ///< moves: what was asked
+  Vec2 position;             ///< moves: where the recording says it ended
   std::uint32_t hits = 0;    ///< moves: collisions recorded; queries: items found
   std::string mover;         ///< moverMove: the mover's name
   std::string summary;       ///< one line: "move player (12, 40) -> (15, 40): 2 hits"
