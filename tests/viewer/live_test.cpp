@@ -79,10 +79,14 @@ TEST_F(LiveDriver, PauseHoldsTheGameAndStepLetsOneFramePass) {
   ASSERT_TRUE(until([&] { return live().controllable() && live().lastFrame() >= 10; }));
   dbg().command(Command::pause);  // hold the game
   EXPECT_TRUE(dbg().paused());
-  // Held at its next frame mark: give it time to arrive there, then it plays no more.
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  frames(2);
-  const std::uint64_t played = game.played();
+  // Held at its next frame mark: wait until it arrives there (longer on a loaded machine; a
+  // game that never stops fails here), then it plays no more.
+  std::uint64_t played = game.played();
+  ASSERT_TRUE(until([&] {
+    played = game.played();
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    return game.played() == played;
+  })) << "the held game never stopped";
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   frames(2);
   EXPECT_EQ(game.played(), played) << "the game went on while held";
