@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "tv/error.hpp"
+#include "tv/observer.hpp"
 #include "tv/world.hpp"
 
 namespace tv {
@@ -20,7 +21,21 @@ void append(std::vector<Collision>& out, const MoveResult& r) {
   out.insert(out.end(), r.collisions.begin(), r.collisions.end());
 }
 
+// Where a body meeting the bottom of `ceiling` goes to clear the end it sticks out past (placed
+// exactly, not start + dx, which may round); its own x when there is no such end.
+double nudgedX(const Rect& body, const Rect& ceiling) {
+  if (body.x < ceiling.x && body.right() <= ceiling.right()) {
+    return placeBefore(ceiling.x, body.w);  // round the left end: right edge on its left edge
+  }
+  if (body.right() > ceiling.right() && body.x >= ceiling.x) return ceiling.right();
+  return body.x;
+}
+
 }  // namespace
+
+double cornerNudgeDx(const Rect& body, const Rect& ceiling) {
+  return nudgedX(body, ceiling) - body.x;
+}
 
 CornerMove moveCornered(World& world, ItemId id, Vec2 goal, const CornerOptions& o) {
   requireFinite(kWhere, "maxNudge", o.maxNudge);
@@ -49,16 +64,11 @@ CornerMove moveCornered(World& world, ItemId id, Vec2 goal, const CornerOptions&
   const Collision c = *hit;
   const Rect t = c.itemRect.at(c.touch);  // the body where it meets the ceiling
   const Rect& ceiling = c.otherRect;
-  double newX = t.x;
-  if (t.x < ceiling.x && t.right() <= ceiling.right() && c.move.x <= 0) {
-    newX = placeBefore(ceiling.x, t.w);  // round the left end: right edge on its left edge
-  } else if (t.right() > ceiling.right() && t.x >= ceiling.x && c.move.x >= 0) {
-    newX = ceiling.right();  // round the right end
-  } else {
-    return plain();  // over the whole width, past both ends, or moving the other way
-  }
+  const double newX = nudgedX(t, ceiling);
   const double dx = newX - t.x;
-  if (!(std::fabs(dx) <= o.maxNudge) || dx == 0) return plain();
+  // Over the whole width, past both ends, or moving the other way: no nudge.
+  if (dx == 0 || (dx < 0 && c.move.x > 0) || (dx > 0 && c.move.x < 0)) return plain();
+  if (!(std::fabs(dx) <= o.maxNudge)) return plain();
 
   // The strip it slides through must be free of anything that blocks it.
   const Rect moved = t.at({newX, t.y});
@@ -79,6 +89,9 @@ CornerMove moveCornered(World& world, ItemId id, Vec2 goal, const CornerOptions&
   out.position = rest.position;
   out.nudged = true;
   out.nudge = {c, dx};
+  // The moves replay the correction; the recording also says it was one, so that a replay (and
+  // the debugger watching it) can show the nudge as what it is.
+  if (WorldObserver* obs = world.observer(); obs && !obs->busy()) obs->cornerNudged(id, out.nudge);
   return out;
 }
 

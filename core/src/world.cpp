@@ -496,6 +496,33 @@ bool World::firstHit(ItemId self, const Rect& r, Vec2 goal, Filter filter, Broad
   });
 }
 
+void World::sweepLeg(std::uint32_t self, const Rect& r, Vec2 goal, BroadPhase broad,
+                     std::vector<Collision>& out) const {
+  // The candidates and the tests a move's leg makes (firstHit, firstHitAmong): the cells the
+  // broad phase walks, the leg's box by its exact edges, the slanted sides, the exact sweep.
+  const Rect g = r.at(goal);
+  const Box legBox{std::min(r.x, g.x), std::min(r.y, g.y), std::max(r.right(), g.right()),
+                   std::max(r.bottom(), g.bottom())};
+  const Slant slant(r, goal);
+  forEachCandidate(self, r, goal, unite(r, g), broad, nullptr,
+                   [&](std::uint32_t other, std::uint32_t generation, const Rect& otherRect) {
+                     if (!legBox.meets(otherRect) || slant.separates(otherRect)) return;
+                     const Sweep s = sweepRect(r, goal, otherRect);
+                     if (s.kind == SweepKind::miss) return;
+                     Collision& c = out.emplace_back();
+                     c.other = {other, generation};
+                     c.overlaps = s.kind == SweepKind::overlap;
+                     c.corner = s.corner;
+                     c.ti = s.ti;
+                     c.move = goal - r.position();
+                     c.normal = s.normal;
+                     c.touch = s.touch;
+                     c.target = s.touch;
+                     c.itemRect = r;
+                     c.otherRect = otherRect;
+                   });
+}
+
 ResponseId World::answered(std::uint32_t slot) const {
   // What this move asked already: a short move's first read, and the hits of earlier legs.
   for (const Candidate& c : candidates_)

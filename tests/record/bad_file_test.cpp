@@ -146,7 +146,7 @@ TEST(BadFile, EmptyShortOrForeignFilesAreRefusedAtByteZero) {
 
 TEST(BadFile, AFutureVersionIsRefusedNamingIt) {
   Bytes f = header(16.0, 2);
-  EXPECT_ERROR(f, "byte 8", "format version 2.0", "version 1.2");
+  EXPECT_ERROR(f, "byte 8", "format version 2.0", "version 1.3");
 }
 
 TEST(BadFile, ABadHeaderChecksumOrCellSizeIsRefused) {
@@ -253,11 +253,57 @@ TEST(BadFile, AContactsCallWithAnUndefinedEventIsRefusedNamingIt) {
       << "an end naming a removed item reads";
 }
 
+// A cornerNudge call by hand: body slot 0 {10, 40, 8, 12}, ceiling slot 1 {16, 0, 32, 8}; kind 15,
+// varint 1, body delta 0, ceiling zigzag(+1), then a group: touch.y (code 0: the ceiling's
+// bottom), touch.x and dx (code 3 each: raw doubles) — code byte 0x3C.
+Bytes nudgeCall(double touchX, double dx, std::initializer_list<std::uint8_t> head = {0x0F, 0x01,
+                                                                                     0x00, 0x02}) {
+  Bytes p = frame1(head);
+  p.push_back(0x3C);
+  f64(p, touchX);
+  f64(p, dx);
+  return p;
+}
+
+TEST(BadFile, ACornerNudgeCallThatIsMalformedOrCutIsRefusedNamingWhere) {
+  const Bytes world = keyframe({{10, 40, 8, 12}, {16, 0, 32, 8}});
+  EXPECT_EQ(errorOf(fileWith(world, nudgeCall(10, -2))), "") << "the well-formed call reads";
+  const tv::Replay r = tv::Replay::fromBytes(fileWith(world, nudgeCall(10, -2)));
+  ASSERT_EQ(r.calls(1).size(), 1u);
+  EXPECT_EQ(r.calls(1)[0].kind, tv::CallKind::cornerNudge);
+  EXPECT_EQ(r.calls(1)[0].nudge.dx, -2.0);
+  // Cut after each of its bytes from its kind on (the frame's own two bytes come first): the
+  // missing part is named, in frame 1.
+  const Bytes whole = nudgeCall(10, -2);
+  for (std::size_t cut = 4; cut < whole.size(); ++cut) {
+    const Bytes part(whole.begin(), whole.begin() + static_cast<std::ptrdiff_t>(cut));
+    const std::string e = errorOf(fileWith(world, part));
+    EXPECT_NE(e.find("frame 1"), std::string::npos) << cut << ": " << e;
+    EXPECT_NE(e.find("cornerNudge"), std::string::npos) << cut << ": " << e;
+  }
+  EXPECT_ERROR(fileWith(world, nudgeCall(10, -2, {0x0F, 0x01, 0x00, 0x00})),
+               "a corner nudge round the body itself");
+  EXPECT_ERROR(fileWith(world, nudgeCall(10, -2, {0x0F, 0x01, 0x00, 0x04})), "frame 1",
+               "cornerNudge ceiling: item index 2 was never issued");
+  EXPECT_ERROR(fileWith(world, nudgeCall(10, -2, {0x0F, 0x01, 0x08, 0x02})),
+               "cornerNudge body: item index 4 was never issued");
+  EXPECT_ERROR(fileWith(world, nudgeCall(10, -2, {0x8F, 0x01, 0x00, 0x02})),
+               "cornerNudge with undefined flags");
+  EXPECT_ERROR(fileWith(world, nudgeCall(10, std::nan(""))), "frame 1", "cornerNudge is nan");
+  EXPECT_ERROR(fileWith(world, nudgeCall(INFINITY, -2)), "cornerNudge is inf");
+  EXPECT_ERROR(fileWith(world, nudgeCall(10, 0)), "dx 0", "no nudge");
+  // Well-formed, but not what the world gives: a divergence at that call, not an error.
+  tv::Replay lie = tv::Replay::fromBytes(fileWith(world, nudgeCall(10, -3)));
+  const std::optional<tv::Divergence> d = lie.validate();
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->what, "corner nudge dx");
+}
+
 TEST(BadFile, UnknownCallKindsAndFlagsAreRefused) {
   const std::string at = "byte " + std::to_string(32 + 8 + keyframe({}).size() + 8 + 2);
-  // Kinds from 15 on are 15 and a varint: 15 + 1 is beyond the list.
-  EXPECT_ERROR(fileWith(keyframe({}), frame1({0x0F, 0x01})), "frame 1", at.c_str(),
-               "unknown call kind 16");
+  // Kinds from 15 on are 15 and a varint: 15 + 2 is beyond the list.
+  EXPECT_ERROR(fileWith(keyframe({}), frame1({0x0F, 0x02})), "frame 1", at.c_str(),
+               "unknown call kind 17");
   EXPECT_ERROR(fileWith(keyframe({}), frame1({0x87})), "queryPoint with undefined flags");
   Bytes frameFlags;
   varint(frameFlags, 1);

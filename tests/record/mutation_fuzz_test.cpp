@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "recording_kit.hpp"
+#include "tv/corner.hpp"
 #include "tv/error.hpp"
+#include "tv/record/recorder.hpp"
 #include "tv/record/replay.hpp"
 #include "tv/sim/rng.hpp"
 
@@ -45,6 +47,16 @@ const std::vector<Bytes>& seeds() {
     }
     w.detach();
     out.push_back(rec.bytes());
+    // A corner nudge: its moves and its cornerNudge call.
+    tv::World c(16);
+    tv::Recorder nudged;
+    (void)c.add({16, 0, 32, 8});
+    c.attach(nudged);
+    const tv::ItemId jumper = c.add({10, 40, 8, 12});
+    nudged.frame();
+    (void)tv::moveCornered(c, jumper, {10, 0});
+    c.detach();
+    out.push_back(nudged.bytes());
     return out;
   }();
   return s;

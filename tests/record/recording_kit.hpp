@@ -14,6 +14,7 @@
 
 #include "tv/batch.hpp"
 #include "tv/contact.hpp"
+#include "tv/corner.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/recorder.hpp"
 #include "tv/timestep.hpp"
@@ -35,6 +36,8 @@ struct Script {
   std::vector<tv::Vec2> velocity;
   std::vector<tv::Mover> movers;
   tv::ItemId bullet[2];
+  tv::ItemId jumper;
+  int nudges = 0;  // corner corrections made
   std::vector<tv::Vec2> movePositions;  // after every world.move and mover.move, in order
   std::vector<std::uint32_t> freeAtAttach;
   std::uint64_t frames = 0;
@@ -88,6 +91,13 @@ struct Script {
     const char* kinds[] = {"discrete",   "sweep", "substep-discrete",
                            "continuous", "pixel", "adaptive"};
     for (const char* k : kinds) movers.emplace_back(tv::parseMover(k));
+    // Far off to the right: a ceiling and a body jumping into its left end (2 px under it) every
+    // 20 frames, corner-corrected (tv::moveCornered: its moves and a cornerNudge call).
+    world.add({1000, 0, 32, 8});
+    world.add({980, 100, 60, 8});
+    jumper = world.add({994, 88, 8, 12});
+    rec.label(jumper, "jumper", "body");
+    double jumpVy = 0;
     bullet[0] = world.add({30, 120, 4, 4});
     bullet[1] = world.add({290, 120, 4, 4});
     tv::Batch batch;
@@ -141,6 +151,14 @@ struct Script {
             return o == ghost ? tv::response::ignore : tv::response::touch;
           });
         }
+        // The jumper: gravity, a jump every 20 frames, corner correction.
+        if (f % 20 == 0 && t == 0) jumpVy = -30;
+        jumpVy += 2.5;
+        const tv::Rect jr = world.rect(jumper);
+        const tv::CornerMove jm = tv::moveCornered(world, jumper, {jr.x, jr.y + jumpVy});
+        nudges += jm.nudged ? 1 : 0;
+        for (const tv::Collision& c : jm.collisions)
+          if (c.normal.y != 0) jumpVy = 0;
         // Two bullets meeting: moving against moving.
         const tv::BatchMove moves[2] = {
             {bullet[0], world.rect(bullet[0]).position() + Vec2{9, 0}},

@@ -190,11 +190,30 @@ WorldPicture ReplaySource::picture() {
       solids_.push_back({r, 0});
     }
   });
+  // The corner corrections of the frame on screen, up to the selected call: the recording's
+  // cornerNudge calls, drawn as a scene's nudges are (the body where it met the corner, and
+  // where the nudge put it).
+  nudges_.clear();
+  const std::size_t end = call_ ? *call_ + 1 : calls_.size();
+  for (std::size_t k = 0; k < end && k < calls_.size(); ++k) {
+    const CallInfo& c = calls_[k];
+    if (c.kind != CallKind::cornerNudge) continue;
+    sim::CornerNudgeAt n;
+    n.body = bodies_.size();  // the body drawn for it, if any (else one past the last)
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      if (bodies_[b].item == c.item) n.body = b;
+    }
+    n.ceiling = c.nudge.hit.other;
+    n.from = c.start;
+    n.to = c.start.at(c.position);
+    nudges_.push_back(n);
+  }
   WorldPicture p;
   p.world = &world();
   p.solids = solids_;
   p.bodies = bodies_;
   p.bodyFills = bodyFills_;
+  p.nudges = nudges_;
   p.selected = selectedBody;
   p.moves = moves_;
   return p;

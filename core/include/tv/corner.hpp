@@ -21,7 +21,8 @@
 /// - the nudge shifts the rest of the move by the same amount: the body ends at goal + (dx, 0).
 ///
 /// It is made of World calls (check, anyOverlap, move), so a recording of the game replays it bit
-/// for bit. Bad input (an unknown item, a goal out of range, maxNudge negative, NaN or Inf)
+/// for bit; a nudge is also reported to the world's observer (WorldObserver::cornerNudged), so a
+/// recording says where one was made (its cornerNudge call) and a debugger can draw it. Bad input (an unknown item, a goal out of range, maxNudge negative, NaN or Inf)
 /// throws tv::Error naming the value, changing nothing.
 
 #include <vector>
@@ -53,6 +54,13 @@ struct CornerMove {
   bool nudged = false;                ///< a corner correction was made
   CornerNudge nudge;                  ///< valid when `nudged`
 };
+
+/// How far a body at `body`, meeting the bottom of `ceiling`, moves sideways to clear the end of
+/// the ceiling it sticks out past: < 0 round the left end (its right edge placed on the
+/// ceiling's left edge, tv::placeBefore), > 0 round the right end; 0 under the whole width or
+/// past both ends. The rule moveCornered nudges by (it also asks that the nudge not go against
+/// the move, and be at most maxNudge); a replay checks a recorded nudge with it.
+[[nodiscard]] double cornerNudgeDx(const Rect& body, const Rect& ceiling);
 
 /// Moves `id` towards `goal` as World::move does, with corner correction (see above).
 [[nodiscard]] CornerMove moveCornered(World& world, ItemId id, Vec2 goal,

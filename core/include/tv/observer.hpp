@@ -32,6 +32,7 @@ struct MoveOptions;
 struct MoveResult;
 struct SegmentHit;
 struct ContactEvent;
+struct CornerNudge;
 
 /// What a World, Mover, Batch and FixedStep report to the one observer attached to them (a
 /// tv::Recorder). Each function is called after the call it names succeeded, with its inputs
@@ -83,6 +84,14 @@ class WorldObserver {
     (void)item;
     (void)forget;
     (void)events;
+  }
+
+  /// `tv::moveCornered(world, item, ...)` nudged `item` round the corner of a ceiling: reported
+  /// after the World calls the correction is made of (check, anyOverlap, the moves), which
+  /// replay it; this says what they were for. Not pure virtual, as `contacted`.
+  virtual void cornerNudged(ItemId item, const CornerNudge& nudge) {
+    (void)item;
+    (void)nudge;
   }
 
   /// An attached FixedStep's `advance(frameTime)` returned `ticks`: one rendered frame begins.

@@ -192,6 +192,28 @@ class World {
   [[nodiscard]] MoveResult project(const Rect& r, Vec2 goal, Filter filter = {},
                                    const MoveOptions& options = {}) const;
 
+  /// Every hit of the one straight leg `r` → `goal`, in the order a move takes them, each with
+  /// the response the filter chose: bump.lua's `World:project`, which Lua's `world:project`
+  /// calls. `self` is the item the rect stands for, left out of the hits (an invalid id for a
+  /// rect that is not an item); `r` need not be its rect.
+  ///
+  /// The hits are those a move of `r` to `goal` meets on its first leg, found as a move finds
+  /// them (the cells `options.broad` walks, the exact sweep) and ordered as a move orders them:
+  /// by the exact time of impact (of two faces a rounding apart, the nearer first although
+  /// their rounded ti are equal), then ordinary hits before exact corner hits, then add order.
+  /// So the first is the first collision of `move` and `check` with the same filter, and a move
+  /// whose filter crosses everything meets them all in this order. The filter is asked once
+  /// about each item hit, in that order; pairs it ignores are left out; `target` is the touch
+  /// (no response has run). With `options.semantics` bump: bump.lua's rules and order
+  /// (tv::bump::project). `options.trace` is not filled; `maxResponses` does not apply.
+  ///
+  /// `out` is cleared first and its memory reused. Not reported to an observer: a replay needs
+  /// nothing from a query that changes nothing. Bad input (an id that is neither invalid nor
+  /// live, a rect or goal out of range, bad options, an answer that is not a registered
+  /// response) throws tv::Error naming the value, with `out` left empty.
+  void hitsAlong(ItemId self, const Rect& r, Vec2 goal, Filter filter, std::vector<Collision>& out,
+                 const MoveOptions& options = {}) const;
+
   // -- responses -----------------------------------------------------------------------------
   /// Registers a response that filters can then return. Names must be unique and non-empty,
   /// and not "ignore" (the special response::ignore).
@@ -385,6 +407,10 @@ class World {
   [[noreturn]] static void refuseAnswer(ResponseId resp);
   // The answer this move got about the item in `slot` (kUnasked if it was not asked).
   [[nodiscard]] ResponseId answered(std::uint32_t slot) const;
+  // Appends every hit of the leg r -> goal among the items but `self` (unordered; response and
+  // filter left alone): the candidates and tests of a move's leg, for hitsAlong.
+  void sweepLeg(std::uint32_t self, const Rect& r, Vec2 goal, BroadPhase broad,
+                std::vector<Collision>& out) const;
   /// Calls f(slot, generation, const Rect&) once for each item registered in the cells the
   /// move visits.
   template <class F>

@@ -294,6 +294,7 @@ void registerPlatformMethods(lua_State* L, int methodsIdx);  // contacts, ground
 void registerRecordingMethods(lua_State* L, int methodsIdx);  // startRecording, frame...
 void pushValidateRecording(lua_State* L);                     // tunnelvision.validateRecording
 void pushRecordingItems(lua_State* L);                        // tunnelvision.recordingItems
+void pushRecordingNudges(lua_State* L);                       // tunnelvision.recordingNudges
 void pushRectFunctions(lua_State* L);                      // bump.rect
 void pushResponseFunctions(lua_State* L);                  // bump.responses
 /// newWorld(cellSize): upvalue 1 is the methods table, 2 the collision keys, 3 true for bump's

@@ -111,6 +111,8 @@ TV_LUA_EXPORT int luaopen_tunnelvision(lua_State* L) {
   lua_setfield(L, tv, "validateRecording");
   tvlua::pushRecordingItems(L);
   lua_setfield(L, tv, "recordingItems");
+  tvlua::pushRecordingNudges(L);
+  lua_setfield(L, tv, "recordingNudges");
   tvlua::pushAutoRecord(L, tv);
   tvlua::pushFastPathInfo(L, tv);
   lua_pushliteral(L, "tunnelvision 0.2");

@@ -121,19 +121,21 @@ int validateRecording(lua_State* L) {
   return 2;
 }
 
-// tunnelvision.recordingItems(path) -> { {label=, category=, moves=, hits=}, ... }: the items a
-// recording names, in the order they appear (what tv-debugger lists).
+// tunnelvision.recordingItems(path) -> { {label=, category=, moves=, hits=, nudges=}, ... }: the
+// items a recording names, in the order they appear (what tv-debugger lists); `nudges` counts
+// the corner corrections world:moveCornered gave the item.
 int recordingItems(lua_State* L) {
   const char* path = luaL_checkstring(L, 1);
   struct Item {
     std::string label, category;
-    double moves, hits;
+    double moves, hits, nudges;
   };
   std::vector<Item> items;
   {
     const tv::Replay replay = tv::Replay::open(path);  // tv::Error names the byte offset
     for (const tv::RecordedItem& i : replay.items()) {
-      items.push_back({i.label, i.category, static_cast<double>(i.moves), static_cast<double>(i.hits)});
+      items.push_back({i.label, i.category, static_cast<double>(i.moves),
+                       static_cast<double>(i.hits), static_cast<double>(i.nudges)});
     }
   }
   lua_createtable(L, static_cast<int>(items.size()), 0);
@@ -148,6 +150,51 @@ int recordingItems(lua_State* L) {
     lua_setfield(L, -2, "moves");
     lua_pushnumber(L, i.hits);
     lua_setfield(L, -2, "hits");
+    lua_pushnumber(L, i.nudges);
+    lua_setfield(L, -2, "nudges");
+    lua_rawseti(L, -2, ++n);
+  }
+  return 1;
+}
+
+// tunnelvision.recordingNudges(path) -> { {frame=, item=, ceiling=, x=, y=, dx=}, ... }: every
+// corner correction in a recording, as its replay reads it (frames 0-based; item and ceiling by
+// their labels; x, y where the body met the corner; dx how far it was nudged).
+int recordingNudges(lua_State* L) {
+  const char* path = luaL_checkstring(L, 1);
+  struct Nudge {
+    double frame;
+    std::string item, ceiling;
+    double x, y, dx;
+  };
+  std::vector<Nudge> nudges;
+  {
+    const tv::Replay replay = tv::Replay::open(path);  // tv::Error names the byte offset
+    for (std::uint64_t f = 0; f < replay.frames(); ++f) {
+      for (const tv::CallInfo& c : replay.calls(f)) {
+        if (c.kind != tv::CallKind::cornerNudge) continue;
+        nudges.push_back({static_cast<double>(f), replay.label(c.item),
+                          replay.label(c.nudge.hit.other), c.nudge.hit.touch.x,
+                          c.nudge.hit.touch.y, c.nudge.dx});
+      }
+    }
+  }
+  lua_createtable(L, static_cast<int>(nudges.size()), 0);
+  int n = 0;
+  for (const Nudge& u : nudges) {
+    lua_createtable(L, 0, 6);
+    lua_pushnumber(L, u.frame);
+    lua_setfield(L, -2, "frame");
+    lua_pushlstring(L, u.item.data(), u.item.size());
+    lua_setfield(L, -2, "item");
+    lua_pushlstring(L, u.ceiling.data(), u.ceiling.size());
+    lua_setfield(L, -2, "ceiling");
+    lua_pushnumber(L, u.x);
+    lua_setfield(L, -2, "x");
+    lua_pushnumber(L, u.y);
+    lua_setfield(L, -2, "y");
+    lua_pushnumber(L, u.dx);
+    lua_setfield(L, -2, "dx");
     lua_rawseti(L, -2, ++n);
   }
   return 1;
@@ -157,6 +204,7 @@ int recordingItems(lua_State* L) {
 
 void pushValidateRecording(lua_State* L) { lua_pushcfunction(L, guarded<validateRecording>); }
 void pushRecordingItems(lua_State* L) { lua_pushcfunction(L, guarded<recordingItems>); }
+void pushRecordingNudges(lua_State* L) { lua_pushcfunction(L, guarded<recordingNudges>); }
 
 void registerRecordingMethods(lua_State* L, int methodsIdx) {
   const luaL_Reg methods[] = {

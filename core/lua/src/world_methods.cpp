@@ -273,7 +273,9 @@ int move(lua_State* L) { return moveOrCheck(L, true); }
 int check(lua_State* L) { return moveOrCheck(L, false); }
 
 // world:project(item, x,y,w,h, goalX, goalY, filter) -> cols, len: every collision of the
-// straight leg, in order (ti, then ordinary hits before exact corner hits, then add order).
+// straight leg, as the core's World::hitsAlong lists them — in the order the world's own moves
+// take them (exact times of impact, then ordinary hits before exact corner hits, then add
+// order; under bump's rules, bump's order).
 int project(lua_State* L) {
   LuaWorld& w = checkWorld(L, 1);
   const tv::Rect r = checkRect(L, 3);
@@ -299,67 +301,27 @@ int project(lua_State* L) {
     // A response added from Lua, projecting its item inside a move: where it projects from is
     // where the move's next leg starts.
     CallContext* outer = w.current;
-    if (outer != nullptr && outer->inResponse && self.valid() &&
-        self == outer->item) {
+    if (outer != nullptr && outer->inResponse && self.valid() && self == outer->item) {
       outer->projected = true;
       outer->projectedFrom = r.position();
     }
-    Lease s(w);
-    {
-      const CallScope scope(ctx);
-      const Busy busy(w);
-      const LuaFilter filter{&ctx};
-      tv::bump::project(w.world, self, r, goal, filter, {}, s->cols);
-    }
-    lua_createtable(L, static_cast<int>(s->cols.size()), 0);
-    int n = 0;
-    for (const tv::Collision& c : s->cols) {
-      pushCollision(L, 1, 10, ctx.itemIdx, c, false);
-      lua_rawseti(L, -2, ++n);
-    }
-    lua_pushinteger(L, n);
-    return 2;
   }
+  Lease s(w);
   {
-    Lease s(w);
-    {
-      const Busy busy(w);
-      const LuaFilter filter{&ctx};
-      w.world.queryRect(tv::unite(r, r.at(goal)), s->items, self);
-      for (const tv::ItemId other : s->items) {
-        const tv::Rect o = w.world.rect(other);
-        const tv::Sweep sw = tv::sweepRect(r, goal, o);
-        if (sw.kind == tv::SweepKind::miss) continue;
-        const tv::ResponseId resp = filter(self, other);
-        if (resp == tv::response::ignore) continue;
-        tv::Collision c;
-        c.item = self;
-        c.other = other;
-        c.overlaps = sw.kind == tv::SweepKind::overlap;
-        c.corner = sw.corner;
-        c.ti = sw.ti;
-        c.move = goal - r.position();
-        c.normal = sw.normal;
-        c.touch = sw.touch;
-        c.itemRect = r;
-        c.otherRect = o;
-        c.response = resp;
-        s->cols.push_back(c);
-      }
-    }
-    // queryRect listed them in add order: a stable sort keeps it among equals.
-    std::stable_sort(s->cols.begin(), s->cols.end(), [](const tv::Collision& a, const tv::Collision& b) {
-      if (a.ti != b.ti) return a.ti < b.ti;
-      return !a.corner && b.corner;
-    });
-    lua_createtable(L, static_cast<int>(s->cols.size()), 0);
-    int n = 0;
-    for (const tv::Collision& c : s->cols) {
-      pushCollision(L, 1, 10, ctx.itemIdx, c, false);
-      lua_rawseti(L, -2, ++n);
-    }
-    lua_pushinteger(L, n);
+    const CallScope scope(ctx);
+    const Busy busy(w);
+    const LuaFilter filter{&ctx};
+    tv::MoveOptions options;
+    if (w.bumpRules) options.semantics = tv::MoveSemantics::bump;
+    w.world.hitsAlong(self, r, goal, filter, s->cols, options);
   }
+  lua_createtable(L, static_cast<int>(s->cols.size()), 0);
+  int n = 0;
+  for (const tv::Collision& c : s->cols) {
+    pushCollision(L, 1, 10, ctx.itemIdx, c, false);
+    lua_rawseti(L, -2, ++n);
+  }
+  lua_pushinteger(L, n);
   return 2;
 }
 

@@ -50,6 +50,7 @@ enum class Tag : std::uint8_t {
   label,
   advance,
   contacts,
+  cornerNudge,
   close,  // the last frame ends; the end mark; the file is closed
 };
 
@@ -110,6 +111,12 @@ struct ContactsRec {
   ItemId id;
   std::uint32_t events, answers;
   bool forget;
+};
+// A corner nudge (tv::moveCornered): the body, the ceiling, where it met the corner, dx.
+struct NudgeRec {
+  ItemId id, ceiling;
+  Vec2 touch;
+  double dx;
 };
 struct AdvanceRec {
   double frameTime;

@@ -611,6 +611,20 @@ void Encoder::contacts(ItemId id, bool forget, std::span<const ContactEvent> eve
   if (!answers.empty()) answerBlock(answers, id);
 }
 
+void Encoder::cornerNudge(ItemId id, ItemId ceiling, Vec2 touch, double dx) {
+  const std::size_t at = out.size();
+  out.u8(kindOf(CallKind::cornerNudge));
+  out.varint(static_cast<std::uint64_t>(CallKind::cornerNudge) - kExtendedKind);
+  out.at(at) |= item(id.index);
+  out.zigzag(static_cast<std::int64_t>(ceiling.index) - static_cast<std::int64_t>(id.index));
+  // A ceiling's touch lies on its bottom edge, and its x mostly just past one of its ends.
+  const Rect& c = model.slots[ceiling.index].rect;
+  Group g(out);
+  g.put(touch.y, c.bottom(), c.y);
+  g.put(touch.x, c.x, c.right(), c.x);
+  g.put(dx, 0.0, 0.0);
+}
+
 // [SECTION] decoder ------------------------------------------------------------------------------
 
 namespace {
@@ -987,6 +1001,7 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
   c.answersInOrder = false;
   c.contacts.clear();
   c.forget = false;
+  c.nudge = {};
   c.item = c.skip = {};
   c.broad = BroadPhase::swept;
   c.maxResponses = kDefaultMaxResponses;
@@ -1330,6 +1345,34 @@ void decodeCall(In& in, Model& m, Call& c, std::uint64_t maxCells) {
         c.contacts.push_back(e);
       }
       if (kb & kAnswers) readAnswers(in, m, c, c.item);
+      return;
+    }
+    case CallKind::cornerNudge: {
+      onlyFlags(kSameItem);
+      c.item = readItem(in, m, kb, "cornerNudge body");
+      const ItemId ceiling = aliveAt(
+          in, m, static_cast<std::int64_t>(c.item.index) + in.zigzag("cornerNudge ceiling"),
+          "cornerNudge ceiling");
+      if (ceiling == c.item) in.fail("a corner nudge round the body itself");
+      const Rect& cr = m.slots[ceiling.index].rect;
+      GroupIn g(in, "cornerNudge");
+      Collision& hit = c.nudge.hit;
+      hit.touch.y = g.get(cr.bottom(), cr.y);
+      hit.touch.x = g.get(cr.x, cr.right(), cr.x);
+      c.nudge.dx = g.get(0.0, 0.0);
+      if (!isFinite(hit.touch) || !std::isfinite(c.nudge.dx) || c.nudge.dx == 0.0) {
+        in.fail("corner nudge touch (" + formatNumber(hit.touch.x) + ", " +
+                formatNumber(hit.touch.y) + ") dx " + formatNumber(c.nudge.dx) +
+                ": not finite, or no nudge");
+      }
+      const Rect& body = m.slots[c.item.index].rect;
+      hit.item = c.item;
+      hit.other = ceiling;
+      hit.normal = {0.0, 1.0};
+      hit.itemRect = body.at(hit.touch);  // the body where it met the corner
+      hit.otherRect = cr;
+      hit.target = hit.touch;
+      hit.move = {};
       return;
     }
     case CallKind::advance: {

@@ -13,6 +13,7 @@
 #include "bytes.hpp"
 #include "tv/batch.hpp"
 #include "tv/contact.hpp"
+#include "tv/corner.hpp"
 #include "tv/mover.hpp"
 #include "tv/record/replay.hpp"
 #include "tv/world.hpp"
@@ -21,7 +22,8 @@ namespace tv::rec {
 
 inline constexpr char kMagic[8] = {'T', 'V', 'R', 'E', 'C', 0, '\r', '\n'};
 inline constexpr std::uint16_t kVersionMajor = 1;
-inline constexpr std::uint16_t kVersionMinor = 2;  // 1.2: the contacts call (kind 15 + varint)
+// 1.2: the contacts call (kind 15 + varint); 1.3: the cornerNudge call (15 + 1).
+inline constexpr std::uint16_t kVersionMinor = 3;
 inline constexpr std::size_t kHeaderSize = 32;
 inline constexpr std::uint32_t kEndMark = 0x21444E45u;  // "END!": the chunk that closes a file
 inline constexpr std::uint32_t kMaxChunk = 1u << 30;
@@ -88,6 +90,7 @@ struct Call {
   std::vector<Leg> legs;
   std::vector<ContactEvent> contacts;  // contacts: the events
   bool forget = false;                 // contacts: Contacts::forget
+  CornerNudge nudge;                   // cornerNudge: the ceiling, where, dx (hit.item: c.item)
 };
 
 struct Model {
@@ -156,6 +159,7 @@ class Encoder {
   void advance(double frameTime, int ticks);
   void contacts(ItemId id, bool forget, std::span<const ContactEvent> events,
                 std::span<const Answer> answers);
+  void cornerNudge(ItemId id, ItemId ceiling, Vec2 touch, double dx);
 
  private:
   std::uint8_t item(std::uint32_t index);  // kSameItem or 0, writing the delta if needed

@@ -441,6 +441,11 @@ void Recorder::contacted(ItemId item, bool forget, std::span<const ContactEvent>
   d.answers.clear();
 }
 
+void Recorder::cornerNudged(ItemId item, const CornerNudge& nudge) {
+  TV_RECORDING();
+  d.put(rec::Tag::cornerNudge, 0, rec::NudgeRec{item, nudge.hit.other, nudge.hit.touch, nudge.dx});
+}
+
 void Recorder::responseAdded(std::string_view name, ResponseId) {
   TV_RECORDING();
   d.text(rec::Tag::addResponse, {}, name, {});

@@ -255,6 +255,7 @@ void Replay::Impl::tally(
   switch (callRole(c.kind)) {
     case CallRole::note:
       if (c.kind == CallKind::label) labels[c.item] = {c.name, c.category};
+      if (c.kind == CallKind::cornerNudge) ++items[itemFor(c.item, f)].nudges;
       return;
     case CallRole::move: {
       ++summary.moves;
@@ -520,6 +521,14 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
                            std::to_string(ends) + " end";
             break;
           }
+          case CallKind::cornerNudge:
+            info.start = c.nudge.hit.itemRect;
+            info.position = {c.nudge.hit.touch.x + c.nudge.dx, c.nudge.hit.touch.y};
+            info.nudge = c.nudge;
+            info.summary = "moveCornered " + who + ": nudged " + formatNumber(c.nudge.dx) +
+                           " round the corner of " + d.labelOf(c.nudge.hit.other) + " at " +
+                           fmt(c.nudge.hit.touch);
+            break;
           case CallKind::advance:
             info.summary = "advance " + readableSeconds(c.frameTime) +
                            " s: " + std::to_string(c.ticks) + " ticks";

@@ -609,6 +609,22 @@ std::optional<Divergence> Replay::Impl::executeOther(MoveTrace* trace, bool comp
         }
         break;
       }
+      case CallKind::cornerNudge: {
+        // The World calls before this one made the correction, and were compared; this call says
+        // they were one. The replayed world must give that nudge: the body, at the recorded
+        // touch, on the ceiling's bottom edge, sticking out past the end it was nudged round by
+        // exactly dx (tv::cornerNudgeDx, the rule moveCornered nudged by).
+        if (!exact || !compare) break;
+        const CornerNudge& n = c.nudge;
+        const Rect ceiling = world->rect(n.hit.other);
+        if (!rec::sameBits(n.hit.touch.y, ceiling.bottom())) {
+          diverge("corner nudge: the ceiling's bottom", fmt(n.hit.touch.y), fmt(ceiling.bottom()));
+          break;
+        }
+        const double dx = cornerNudgeDx(world->rect(c.item).at(n.hit.touch), ceiling);
+        if (!rec::sameBits(dx, n.dx)) diverge("corner nudge dx", fmt(n.dx), fmt(dx));
+        break;
+      }
       case CallKind::label:
       case CallKind::advance:
         break;

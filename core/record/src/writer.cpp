@@ -267,6 +267,13 @@ void Writer::record(const std::byte* p) {
       e.contacts(c.id, c.forget, events, as);
       return;
     }
+    case Tag::cornerNudge: {
+      const NudgeRec n = r.body<NudgeRec>();
+      if (!tracks(n.id)) return lost(n.id);
+      if (!tracks(n.ceiling)) return lost(n.ceiling);
+      e.cornerNudge(n.id, n.ceiling, n.touch, n.dx);
+      return;
+    }
     case Tag::advance: {
       const AdvanceRec a = r.body<AdvanceRec>();
       e.advance(a.frameTime, a.ticks);

@@ -78,4 +78,48 @@ describe('recording', function()
     assert.matches('byte %d+', err)
     os.remove(path)
   end)
+
+  --          +------------------------------+
+  --          |  ceiling {16, 0, 32, 8}         |
+  --       +--+-----------------------------+
+  --       |b |   jumper {10, 40, 8, 12}: jumps straight up, 2 px under the ceiling's left end;
+  --       +--+   world:moveCornered nudges it -2 round the corner. The recording says so.
+  it('records a corner nudge as one, and the replay finds it: which body, which ceiling, dx', function()
+    for _, make in ipairs({ tv.newWorld, tv.bump.newWorld }) do
+      local path = tmpfile()
+      local world = make(16)
+      local ceiling, jumper = { name = 'ceiling' }, { name = 'jumper' }
+      world:add(ceiling, 16, 0, 32, 8)
+      world:add(jumper, 10, 40, 8, 12)
+      world:startRecording(path)
+      world:frame()
+      local x, y, _, _, dx = world:moveCornered(jumper, 10, 0)
+      assert.same({ 8, 0, -2 }, { x, y, dx })
+      world:frame()
+      world:stopRecording()
+      local ok, report = tv.validateRecording(path)
+      assert.is_true(ok, report)
+      local nudges = tv.recordingNudges(path)
+      assert.equal(1, #nudges)
+      assert.same({ item = 'jumper', ceiling = 'ceiling', x = 10, y = 8, dx = -2 },
+                  { item = nudges[1].item, ceiling = nudges[1].ceiling, x = nudges[1].x,
+                    y = nudges[1].y, dx = nudges[1].dx })
+      for _, item in ipairs(tv.recordingItems(path)) do
+        assert.equal(item.label == 'jumper' and 1 or 0, item.nudges)
+      end
+      os.remove(path)
+      -- Negative control: the same jump by world:move is recorded with no nudge (it stops dead).
+      path = tmpfile()
+      world = make(16)
+      world:add(ceiling, 16, 0, 32, 8)
+      world:add(jumper, 10, 40, 8, 12)
+      world:startRecording(path)
+      world:frame()
+      local mx, my = world:move(jumper, 10, 0)
+      assert.same({ 10, 8 }, { mx, my })
+      world:stopRecording()
+      assert.same({}, tv.recordingNudges(path))
+      os.remove(path)
+    end
+  end)
 end)

@@ -123,6 +123,7 @@ class ReplaySource final : public Source {
   std::vector<CallInfo> calls_;
   std::optional<ItemId> selected_;
   std::vector<TracedMove> moves_;
+  std::vector<sim::CornerNudgeAt> nudges_;  // the picture's: the frame's cornerNudge calls
   // The names the kept traces' `mover` views point into: a trace names its mover by a view of
   // the mover's own name, and a seek rebuilds the replay's movers, so the views would dangle.
   std::set<std::string, std::less<>> moverNames_;

@@ -29,7 +29,8 @@
   X(batchStep, ::tv::CallRole::batch, "Batch::step")     \
   X(label, ::tv::CallRole::note, "label")                \
   X(advance, ::tv::CallRole::note, "advance")            \
-  X(contacts, ::tv::CallRole::query, "Contacts::update")
+  X(contacts, ::tv::CallRole::query, "Contacts::update") \
+  X(cornerNudge, ::tv::CallRole::note, "moveCornered")
 
 namespace tv {
 
@@ -41,12 +42,14 @@ enum class CallRole : std::uint8_t {
   batch,  ///< moves many items (Batch::step)
   query,  ///< asks about the world (queryRect, queryPoint, querySegment, anyOverlap, contacts)
   setup,  ///< changes how later calls behave (addResponse)
-  note,   ///< says something about the game and changes no item (label, advance: a frame's start)
+  /// says something about the game and changes no item (label, advance: a frame's start,
+  /// cornerNudge: the moves before it were a corner correction)
+  note,
 };
 
 /// What a recorded call was: a World call (add ... anyOverlap, addResponse), a Mover::move, a
-/// Batch::step, a Recorder::label, a FixedStep advance (a frame's start) or a Contacts::update
-/// (or forget).
+/// Batch::step, a Recorder::label, a FixedStep advance (a frame's start), a Contacts::update
+/// (or forget) or a corner nudge (tv::moveCornered's, after the World calls that made it).
 enum class CallKind : std::uint8_t {
 #define TV_CALL_KIND(kind, role, words) kind,
   TV_RECORDED_CALLS(TV_CALL_KIND)

@@ -141,6 +141,7 @@ class Recorder final : public WorldObserver {
   void queriedSegment(Vec2 a, Vec2 b, std::span<const SegmentHit> hits) override;
   void askedOverlap(const Rect& r, ItemId skip, bool any) override;
   void contacted(ItemId item, bool forget, std::span<const ContactEvent> events) override;
+  void cornerNudged(ItemId item, const CornerNudge& nudge) override;
   void responseAdded(std::string_view name, ResponseId id) override;
   void moverMoved(const Mover& mover, ItemId id, const Rect& start, Vec2 goal,
                   const MoveResult& r) override;

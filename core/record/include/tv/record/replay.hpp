@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tv/corner.hpp"
 #include "tv/error.hpp"  // what they throw
 #include "tv/mover.hpp"
 #include "tv/record/calls.hpp"  // CallKind, the recorded calls
@@ -33,6 +34,11 @@ struct CallInfo {
   std::uint32_t index = 0;   ///< within its frame
   ItemId item;               ///< the item it concerns (invalid for project and the queries)
   std::uint64_t offset = 0;  ///< byte offset of its record in the file
+  /// cornerNudge (the World calls before it were tv::moveCornered's correction): the ceiling
+  /// (`hit.other`, `hit.otherRect` as it stood), where the body met its corner (`hit.touch`;
+  /// `hit.itemRect` is the body there, and also `start`; normal (0, 1)) and how far it was
+  /// nudged (`dx`; `position` is where that put it).
+  CornerNudge nudge;
   Rect start;                ///< moves: the item before the call
   Vec2 goal;                 ///< moves: what was asked
   Vec2 position;             ///< moves: where the recording says it ended
@@ -58,6 +64,7 @@ struct RecordedItem {
   /// push out) moves them by updates, not moves.
   std::uint64_t updates = 0;
   double maxSpeed = 0.0;  ///< longest single move, in world units
+  std::uint64_t nudges = 0;  ///< corner corrections (tv::moveCornered) it was given
   std::uint64_t endedOverlapping = 0;  ///< moves that ended overlapping a solid (not ignored)
 };
 
