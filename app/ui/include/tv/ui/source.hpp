@@ -55,6 +55,8 @@ enum class FailureKind : std::uint8_t {
   jittered,     ///< a resting body moved with nothing pushing it
   diverged,     ///< the replay's result differs from the recording
   busy,         ///< made more responses than the threshold in one move
+  dropped,      ///< a rider that fell into or through the platform it stood on
+  popped,       ///< a rider left above its platform, not on it (thrown or left behind)
 };
 [[nodiscard]] const char* failureKindName(FailureKind k);
 
