@@ -112,8 +112,12 @@ void ReplaySource::rebuild() {
 void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
                                  std::size_t end) {
   // Stepping a frame's last call leaves the replay at the next frame's start (or at the end of
-  // the one it stepped): either is the same world, but only the first can be stepped on.
-  if (replay_.frame() != f || replay_.call() != 0) replay_.seek(f, 0);
+  // the one it stepped): either is the same world. From the end of the frame before, step on
+  // into this one: a seek would rebuild the world at a keyframe, and the replay's contacts
+  // would forget their history (a ground's velocity, an end).
+  const bool onFromBefore = f > 0 && replay_.frame() + 1 == f &&
+                            replay_.call() >= replay_.callCount(f - 1) && !replay_.atEnd();
+  if (!onFromBefore && (replay_.frame() != f || replay_.call() != 0)) replay_.seek(f, 0);
   for (std::size_t k = 0; k < end; ++k) {
     const CallInfo& c = here[k];
     const bool isCall = f == frame_ && call_ && k == *call_;
@@ -121,6 +125,13 @@ void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
         traces(c) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
     MoveTrace t;
     std::optional<Divergence> d = replay_.step(traced ? &t : nullptr);
+    if (replay_.frame() == f && replay_.call() == k) {
+      // The step only entered the frame, reporting that its keyframe differs from the world:
+      // that divergence is this frame's, and the call is the next step.
+      if (d && exact() && !pictureDivergence_) pictureDivergence_ = d;
+      if (d && f == frame_ && !divergence_) divergence_ = std::move(d);
+      d = replay_.step(traced ? &t : nullptr);
+    }
     if (d && exact() && !pictureDivergence_) pictureDivergence_ = d;
     // The frame on screen's own, for the inspector's call.
     if (d && f == frame_ && !divergence_) divergence_ = std::move(d);
