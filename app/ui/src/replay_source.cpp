@@ -62,6 +62,7 @@ void ReplaySource::goTo(std::uint64_t f) {
   if (!next) return rebuild();
   divergence_.reset();
   callTraced_ = false;
+  contactEvents_.clear();
   stepFrame(frame_, calls_, calls_.size());
   trimHistory();
 }
@@ -84,6 +85,7 @@ void ReplaySource::rebuild() {
   callTraced_ = false;
   divergence_.reset();
   pictureDivergence_.reset();
+  contactEvents_.clear();
   primed_ = false;
   if (replay_.frames() == 0) return;
   const std::uint64_t from = frame_ > history_ ? frame_ - history_ : 0;
@@ -140,7 +142,24 @@ void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
       moves_.push_back({f, std::move(t)});
       callTraced_ = isCall;
     }
+    if (c.kind == CallKind::contacts) noteContacts(f, c);
   }
+}
+
+void ReplaySource::noteContacts(std::uint64_t f, const CallInfo& c) {
+  // A what-if's world is not the one the game's events came from: it shows none.
+  if (!exact()) return;
+  sawContacts_ = true;
+  if (f != frame_) return;
+  const World& w = replay_.world();
+  const Rect at = w.has(c.item) ? w.rect(c.item) : Rect{};
+  for (const ContactEvent& e : c.contacts)
+    contactEvents_.push_back({0, e, at, w.has(e.other) ? w.rect(e.other) : at});
+}
+
+std::optional<Ground> ReplaySource::ground(ItemId id) const {
+  // The replay stands where the picture was drawn: its tracker's ground is the picture's.
+  return exact() ? replay_.ground(id) : std::nullopt;
 }
 
 void ReplaySource::trimHistory() {
@@ -206,6 +225,7 @@ WorldPicture ReplaySource::picture() {
   p.bodyFills = bodyFills_;
   p.selected = selectedBody;
   p.moves = moves_;
+  p.contactEvents = contactEvents_;
   return p;
 }
 

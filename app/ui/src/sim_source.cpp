@@ -358,9 +358,20 @@ WorldPicture SimSource::picture() {
   p.renderRects = renderRects_;
   p.contacts = sim_.solidContacts();
   p.nudges = sim_.cornerNudges();
+  p.contactEvents = sim_.contactEvents();
   p.selected = body_;
   p.moves = moves_;
   return p;
+}
+
+std::optional<Ground> SimSource::ground(ItemId id) const {
+  const auto b = bodyOf(id);
+  return b ? sim_.ground(*b) : std::nullopt;
+}
+
+bool SimSource::hasContacts() const {
+  const auto bodies = sim_.bodies();
+  return std::any_of(bodies.begin(), bodies.end(), [](const sim::Body& b) { return b.contacts; });
 }
 
 double SimSource::followMinSide() const {
