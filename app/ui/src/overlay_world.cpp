@@ -186,6 +186,10 @@ void drawContactEvents(ImDrawList& dl, const Camera& cam,
       const ImVec2 a = cam.toScreen(from), b = cam.toScreen(to);
       const ImVec2 mid{(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
       if (phase == ContactPhase::persist) {
+        // The steady state is left out where a body is too small on screen to carry a line
+        // beside its fill (a zoomed-out crowd would be striped); a change is always marked.
+        if (std::min(cam.toScreenLength(c.bodyRect.w), cam.toScreenLength(c.bodyRect.h)) < 10.0f)
+          continue;
         // Along the edge, 1.5 px inside the body (towards it along the normal), so it does not
         // hide a one-way side's dashed line or the other item's edge.
         const auto nx = static_cast<float>(c.event.normal.x);
