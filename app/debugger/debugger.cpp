@@ -355,16 +355,37 @@ void Debugger::show(std::uint64_t f, std::optional<std::uint32_t> k,
   view_.revealCall = true;
 }
 
+namespace {
+bool sameMover(const MoverSpec& a, const MoverSpec& b) {
+  return a.name() == b.name() && a.maxStep == b.maxStep;
+}
+}  // namespace
+
 void Debugger::compareWith(const std::vector<MoverSpec>& movers, bool updatesAsMoves) {
   try {
     if (isScene()) {
+      // A mover beside itself shows nothing new and its failures would be listed twice.
+      const MoverSpec shown = this->movers().front();
+      for (std::size_t i = 0; i < movers.size(); ++i) {
+        const bool twice = sameMover(movers[i], shown) ||
+                           std::any_of(movers.begin(), movers.begin() + static_cast<std::ptrdiff_t>(i),
+                                       [&](const MoverSpec& m) { return sameMover(m, movers[i]); });
+        if (twice) fail("what-if", movers[i].name() + " is already shown: pick another mover");
+      }
       std::vector<MoverSpec> all = {this->movers().front()};
       all.insert(all.end(), movers.begin(), movers.end());
       setMovers(std::move(all));
       return;
     }
     // A recording: the recorded run as it is (frame, call, traced item), and one what-if run
-    // per mover beside it.
+    // per mover beside it, each once.
+    for (std::size_t i = 0; i < movers.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (sameMover(movers[i], movers[j])) {
+          fail("what-if", movers[i].name() + " is already shown: pick another mover");
+        }
+      }
+    }
     std::vector<std::unique_ptr<ui::Source>> panels;
     const ui::ReplaySource& recorded = *session_->primary().replay();
     for (const MoverSpec& m : movers) panels.push_back(recorded.whatIf(m, updatesAsMoves));
@@ -456,6 +477,7 @@ void Debugger::refreshLive() {
   if (l->run() != run) {
     // A new run: a game connected (again). Its world is a new one: frame it, trace its busiest,
     // and follow it as it comes (a pause was the last game's: the new one is not held).
+    playingBack_ = false;
     checks_.reset(*session_, false);
     traceBusiest();
     frameAll();
@@ -463,6 +485,7 @@ void Debugger::refreshLive() {
     paused_ = false;
     jumpToNewest_ = false;
   }
+  if (playingBack_) return;  // the person plays the kept frames: advance() moves through them
   if ((!paused_ || jumpToNewest_) && l->lastFrame() != currentTick()) {
     session_->goTo(l->lastFrame());
     jumpToNewest_ = jumpToNewest_ && currentTick() < l->lastFrame();
@@ -484,7 +507,8 @@ void Debugger::goTo(std::uint64_t f, bool stopAtEnd) {
 }
 
 void Debugger::advance(double seconds) {
-  if (paused_ || live()) return;  // a live game goes at its own pace (refreshLive)
+  // A live game goes at its own pace (refreshLive), unless what it sent is being played back.
+  if (paused_ || (live() && !playingBack_)) return;
   clock_ += seconds * speed_;
   const double step = session_->playSeconds();
   int n = 0;
@@ -501,11 +525,12 @@ void Debugger::advance(double seconds) {
   }
   if (n == kMaxFramesPerDraw) clock_ = 0.0;
   // Nothing more can happen: stop, so the interesting frames stay in reach.
-  if (session_->ended() && session_->frame() >= session_->lastFrame()) {
+  if ((session_->ended() || playingBack_) && session_->frame() >= session_->lastFrame()) {
     paused_ = true;
-    notice_ = isScene() ? "the scene ended at tick " + std::to_string(currentTick()) +
-                              " (Play runs it again)"
-                        : "the end of the recording (Play runs it again)";
+    notice_ = isScene()      ? "the scene ended at tick " + std::to_string(currentTick()) +
+                                   " (Play runs it again)"
+              : playingBack_ ? "the last frame the game sent (Play runs them again)"
+                             : "the end of the recording (Play runs it again)";
   }
 }
 
@@ -760,7 +785,10 @@ void Debugger::run(Command c) {
   switch (c) {
     case Command::pause: {
       notice_.clear();
-      if (ui::LiveSource* l = liveSource()) {
+      ui::LiveSource* l = liveSource();
+      // With no game connected, what it sent plays back as a recording does (below).
+      playingBack_ = l != nullptr && !l->connected();
+      if (l != nullptr && l->connected()) {
         // Pause holds the game at its next frame, where it allows it; either way the view
         // stops following. Play lets it go on and follows the newest frame again.
         if (paused_) {
@@ -774,10 +802,13 @@ void Debugger::run(Command c) {
         break;
       }
       // Play at the end plays it again, and says so, rather than pausing at once.
-      if (paused_ && session_->ended() && session_->frame() >= session_->lastFrame()) {
+      if (paused_ && (session_->ended() || playingBack_) &&
+          session_->frame() >= session_->lastFrame()) {
         const std::uint64_t end = currentTick();
         goTo(session_->firstFrame());
-        notice_ = std::string(isScene() ? "the scene had ended at tick " : "the recording ends at frame ") +
+        notice_ = std::string(isScene()      ? "the scene had ended at tick "
+                              : playingBack_ ? "the game's frames end at frame "
+                                             : "the recording ends at frame ") +
                   std::to_string(end) + ": playing again from " +
                   std::to_string(session_->firstFrame());
       }
@@ -789,8 +820,10 @@ void Debugger::run(Command c) {
       paused_ = true;
       notice_.clear();
       if (ui::LiveSource* l = liveSource()) {
-        // One more frame of the game, then held again; shown when it arrives.
-        if (l->controllable()) {
+        // One more frame of the game, then held again; shown when it arrives. With no game
+        // connected, the next of the frames it sent.
+        playingBack_ = !l->connected();
+        if (l->controllable() && l->connected()) {
           l->receiver().step();
           jumpToNewest_ = true;
         } else {
@@ -868,6 +901,23 @@ void Debugger::run(Command c) {
       break;
     case Command::whatIf:
       showWhatIf_ = !showWhatIf_;
+      if (showWhatIf_) {
+        // Offer a mover that is not shown yet (the dialog kept the last one picked, often the
+        // mover on screen: run beside itself it shows nothing new).
+        const std::vector<MoverSpec> shown = movers();
+        const auto isShown = [&](const MoverSpec& m) {
+          return std::any_of(shown.begin(), shown.end(),
+                             [&](const MoverSpec& s) { return sameMover(s, m); });
+        };
+        if (isShown(draftWhatIf_)) {
+          for (const MoverEntry& m : moverTable()) {
+            if (!isShown(m.spec)) {
+              draftWhatIf_ = m.spec;
+              break;
+            }
+          }
+        }
+      }
       break;
     case Command::items:
       view_.showTab = ui::Tab::items;
@@ -894,7 +944,7 @@ void Debugger::run(Command c) {
       break;
     case Command::help:
       showHelp_ = !showHelp_;
-      helpPlacing_ = showHelp_ ? 3 : 0;
+      helpFollows_ = showHelp_;
       break;
     case Command::quit:
       quit_ = true;

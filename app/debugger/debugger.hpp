@@ -69,7 +69,7 @@ class Debugger {
   void setPinned(bool pinned);
   void openHelp() {
     showHelp_ = true;
-    helpPlacing_ = 3;
+    helpFollows_ = true;
   }
   /// What a command does, as its key or menu item would (tests drive the debugger with it).
   void command(Command c) { run(c); }
@@ -137,6 +137,9 @@ class Debugger {
   [[nodiscard]] bool idle() const;
   /// What the status bar says now, in order (tests read it; the bar drops what does not fit).
   [[nodiscard]] std::vector<std::string> status() const;
+  /// The status when no mover failed where another did not: "no failure in N ticks", or how
+  /// many failures the movers share.
+  [[nodiscard]] std::string noFailureWords() const;
 
  private:
   // -- sources and time (debugger.cpp) -------------------------------------------------------
@@ -191,12 +194,15 @@ class Debugger {
   bool updatesAsMoves_ = false;
 
   bool paused_ = true;
+  // Playing back the frames a live game sent after it left (Space with no game connected): the
+  // kept frames play as a recording's do, not followed to the newest.
+  bool playingBack_ = false;
   double speed_ = 1.0;
   double clock_ = 0.0;    // simulated seconds not yet drawn
   double frameMs_ = 0.0;  // wall time per frame, smoothed, for the menu bar
   bool follow_ = false;
   bool showHelp_ = false;
-  int helpPlacing_ = 3;  // frames Help is still placed over the column's tabs (the layout settles)
+  bool helpFollows_ = true;  // Help stays over the column's tabs until the person moves it
   bool showSweep_ = false;
   bool showWhatIf_ = false;
   bool openPicker_ = false;

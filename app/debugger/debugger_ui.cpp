@@ -107,8 +107,7 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   if (showHelp_) {
     // Over the column's tabs: the world (the moment that matters) and the controls above them
     // stay in view; a person who wants it elsewhere drags it.
-    drawHelp(&showHelp_, view_.tabsPos, view_.tabsSize, helpPlacing_ > 0);
-    if (helpPlacing_ > 0) --helpPlacing_;
+    helpFollows_ = drawHelp(&showHelp_, view_.tabsPos, view_.tabsSize, helpFollows_);
   }
   if (showSweep_ && scene_) drawSweep();
   if (showWhatIf_) drawWhatIfDialog();
@@ -438,9 +437,16 @@ std::vector<std::string> Debugger::status() const {
     }
   }
   if (!checks_.firstFailure() && checks_.done() && isScene()) {
-    out.push_back("no failure in " + std::to_string(checks_.known()) + " ticks");
+    out.push_back(noFailureWords());
   }
   return out;
+}
+
+std::string Debugger::noFailureWords() const {
+  const std::size_t listed = checks_.failures().entries.size();
+  if (listed == 0) return "no failure in " + std::to_string(checks_.known()) + " ticks";
+  return "no mover fails more than another, but " + std::to_string(listed) +
+         " failures are listed (Failures tab)";
 }
 
 void Debugger::drawTimeline(ImVec2 display, float h) {
@@ -460,9 +466,11 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
   };
   const bool scene = isScene();
   button("Back", Command::stepBack);
-  if (const ui::LiveSource* l = liveSource()) {
-    // A game that allows it is held and stepped from here; any game is followed or not.
-    if (l->controllable()) {
+  const ui::LiveSource* game = liveSource();
+  if (game != nullptr && game->connected()) {
+    // A game that allows it is held and stepped from here; any game is followed or not. (Once
+    // it has left, its frames play back as a recording's.)
+    if (game->controllable()) {
       button(paused_ ? "Resume game" : "Pause game", Command::pause);
       button("Step game", Command::step);
     } else {
@@ -624,9 +632,10 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
       }
     }
     if (!marks.failure && checks_.done() && scene) {
-      char text[64];
-      std::snprintf(text, sizeof text, "no failure in %" PRIu64 " ticks", checks_.known());
-      (void)note(pal::kGood, text, "no failure", text, false);
+      // Failures listed that no mover has more of than another are not "no failure".
+      const std::string text = noFailureWords();
+      const bool none = checks_.failures().entries.empty();
+      (void)note(none ? pal::kGood : pal::kBad, text, none ? "no failure" : "fail alike", text, false);
     }
     if (!dropped.empty()) {
       ImGui::TextColored(colour(pal::kDim), "  (+%zu more)", dropped.size());
@@ -737,6 +746,7 @@ void Debugger::drawSweep() {
 void Debugger::drawWhatIfDialog() {
   ImGui::SetNextWindowSize({440, 0}, ImGuiCond_Always);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, {0.5f, 0.5f});
+  ImGui::SetNextWindowBgAlpha(1.0f);  // over the panels: their labels must not show through
   if (!ImGui::Begin("What-if: re-run under another mover (W)", &showWhatIf_,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
@@ -759,9 +769,15 @@ void Debugger::drawWhatIfDialog() {
   const bool substep = draftWhatIf_.kind == MoverKind::substep;
   ImGui::BeginDisabled(!substep || scene);
   ImGui::SetNextItemWidth(220.0f);
-  const double lo = 0.0, hi = 1e6;
-  ImGui::DragScalar("substep length", ImGuiDataType_Double, &draftSubstep_, 0.25f, &lo, &hi,
-                    draftSubstep_ == 0.0 ? "half the smallest item" : "%.3g");
+  // A field one clicks and types into (a drag field wants a double click first); 0 is the
+  // mover's default, said beside it.
+  ImGui::InputDouble("substep length", &draftSubstep_, 0.0, 0.0, "%.6g");
+  const bool lengthOk = !substep || scene || (draftSubstep_ >= 0.0 && draftSubstep_ <= 1e6);
+  if (!lengthOk) {
+    ImGui::TextColored(colour(pal::kBad), "substep length %g refused: 0 to 1e6", draftSubstep_);
+  } else if (draftSubstep_ == 0.0) {
+    ImGui::TextDisabled("0: half the smallest item");
+  }
   ImGui::EndDisabled();
   if (!scene) {
     ImGui::Checkbox("treat a body's updates as moves", &draftUpdates_);
@@ -771,7 +787,10 @@ void Debugger::drawWhatIfDialog() {
           "each update that only changes a position is re-run as a move");
     }
   }
-  if (ImGui::Button("Run beside it")) {
+  ImGui::BeginDisabled(!lengthOk);
+  const bool run = ImGui::Button("Run beside it");
+  ImGui::EndDisabled();
+  if (run) {
     MoverSpec m = draftWhatIf_;
     if (substep && !scene) m.maxStep = draftSubstep_;
     std::vector<MoverSpec> next = movers();
@@ -782,10 +801,15 @@ void Debugger::drawWhatIfDialog() {
     // only cover the world.
     showWhatIf_ = false;
   }
-  ImGui::SameLine();
-  if (ImGui::Button("This run only")) {
-    if (session_->comparing()) compareWith({});
-    showWhatIf_ = false;
+  // Taking the re-runs away is offered only when there are some (a button that did nothing
+  // read as "re-run only under this mover").
+  if (session_->comparing()) {
+    ImGui::SameLine();
+    if (ImGui::Button("Close the re-runs")) {
+      compareWith({});
+      showWhatIf_ = false;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("show this run alone again");
   }
   if (!scene) {
     ImGui::PushStyleColor(ImGuiCol_Text, pal::kDim);

@@ -1,6 +1,9 @@
 #include "shortcuts.hpp"
 
+#include <cmath>
+
 #include "imgui.h"
+#include "imgui_internal.h"
 #include "tv/ui/palette.hpp"
 
 namespace tv::viewer {
@@ -61,14 +64,22 @@ const char* keysOf(Command c) {
   return "";
 }
 
-void drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place) {
+bool drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place) {
+  const char* title = "Help (F1)";
+  // Being dragged: from now on where the person puts it.
+  const ImGuiWindow* before = ImGui::FindWindowByName(title);
+  if (before != nullptr && GImGui->MovingWindow == before) place = false;
   ImGui::SetNextWindowPos(pos, place ? ImGuiCond_Always : ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(size, place ? ImGuiCond_Always : ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(1.0f);  // over the panel: its labels must not show through
-  if (!ImGui::Begin("Help (F1)", open, ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin(title, open, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
-    return;
+    return place;
   }
+  // Resized by its grip this frame: the person's size from now on. (ImGui puts the size it is
+  // given on whole pixels.)
+  const ImVec2 now = ImGui::GetWindowSize();
+  if (place && (std::fabs(now.x - size.x) > 1.0f || std::fabs(now.y - size.y) > 1.0f)) place = false;
   ImGui::TextWrapped(
       "Tunnelvision shows, frame by frame, what each move did: the cells it visited (yellow), "
       "the items it tested (magenta), its sweep (white), substeps (violet), hits (red) and what "
@@ -104,6 +115,7 @@ void drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place) {
       "Keys reach the world only while no text field is being edited. This window "
       "opens on the first run; F1 brings it back.");
   ImGui::End();
+  return place;
 }
 
 }  // namespace tv::viewer

@@ -47,8 +47,9 @@ struct Shortcut {
 /// The keys of `c`, e.g. "Ctrl+O".
 [[nodiscard]] const char* keysOf(Command c);
 
-/// The Help window: every shortcut and the mouse; placed at `pos`, `size` while `place` (its
-/// first frames, while the layout it goes over settles), then where the person moves it.
-void drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place);
+/// The Help window: every shortcut and the mouse; placed at `pos`, `size` while `place` (the
+/// column's tabs, which move when the panel above them grows), until the person moves or
+/// resizes it. Returns whether it is still to be placed next frame.
+bool drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place);
 
 }  // namespace tv::viewer

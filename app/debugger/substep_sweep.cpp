@@ -97,8 +97,12 @@ bool SubstepSweep::advance() {
 
 std::optional<double> SubstepSweep::draw(bool* open, double currentLength, bool byDefault) {
   std::optional<double> picked;
-  ImGui::SetNextWindowSize({430, 520}, ImGuiCond_FirstUseEver);
+  // Clear of the toolbar and status line below at 640 px tall too.
+  const float room = ImGui::GetMainViewport()->Size.y - 190.0f;
+  ImGui::SetNextWindowSize({430, room < 520.0f ? (room > 200.0f ? room : 200.0f) : 520.0f},
+                           ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos({120, 120}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // over the panels: their labels must not show through
   if (!ImGui::Begin("Substep sweep (T)", open)) {
     ImGui::End();
     return picked;

@@ -114,6 +114,48 @@ TEST_F(DebuggerDriver, At1024EveryPanelLineIsWholeAndHelpLeavesTheControlsInView
   EXPECT_FALSE(help.Overlaps(controls));
 }
 
+// Help sat where the column's tabs were when it opened: opening the controls' Overlays (or a
+// window resized) moved the tabs down and the controls ran under Help. It follows the tabs now,
+// until the person drags it.
+TEST_F(DebuggerDriver, HelpFollowsTheColumnsTabsWhenTheLayoutMoves) {
+  open({"--scene", "bullets-wall", "--tick", "2", "--body", "2"});
+  dbg().openHelp();
+  frames(3);
+  const ImVec2 first = dbg().view().tabsPos;
+  resize(1024, 640);
+  frames(3);  // the controls' height settles over a frame or two, as when Help opens
+  const ImVec2 tabs = dbg().view().tabsPos;
+  ASSERT_NE(tabs.x, first.x) << "the tabs did not move: the test shows nothing";
+  const ImRect help = windowRect("Help (F1)");
+  EXPECT_NEAR(help.Min.x, tabs.x, 1.0f);  // ImGui puts windows on whole pixels
+  EXPECT_NEAR(help.Min.y, tabs.y, 1.0f);
+  EXPECT_FALSE(help.Overlaps(windowRect("Scene and mover")));
+}
+
+// What-if opened on the mover shown, and "Run beside it" ran discrete beside discrete: the
+// Failures tab listed each failure twice (1482) while the status bar said, in green, "no
+// failure in 2 ticks". A mover is shown once; movers that fail alike are not "no failure".
+TEST_F(DebuggerDriver, AMoverIsNotRunBesideItselfAndSharedFailuresAreNotNoFailure) {
+  open({"--scene", "bullets-wall", "--mover", "discrete", "--tick", "2", "--body", "2"});
+  dbg().compareWith({MoverSpec{.kind = MoverKind::discrete}});
+  EXPECT_FALSE(dbg().session().comparing());
+  EXPECT_NE(dbg().message().find("discrete is already shown"), std::string::npos) << dbg().message();
+  dbg().compareWith({MoverSpec{.kind = MoverKind::continuous}});  // the control: another mover
+  EXPECT_TRUE(dbg().session().comparing()) << dbg().message();
+  // Pieces longer than the whole move: substep-discrete teleports as discrete does, and both
+  // send the same 741 bullets through. Neither is worse; their failures are listed.
+  open({"--scene", "bullets-wall", "--compare", "discrete,substep-discrete", "--substep", "1000",
+        "--tick", "2"});
+  frames(5);
+  ASSERT_TRUE(dbg().checks().done());
+  ASSERT_FALSE(dbg().checks().firstFailure()) << "one mover did worse: the test shows nothing";
+  ASSERT_FALSE(dbg().checks().failures().entries.empty());
+  std::string all;
+  for (const std::string& s : dbg().status()) all += s + " | ";
+  EXPECT_EQ(all.find("no failure in"), std::string::npos) << all;
+  EXPECT_NE(all.find("failures are listed"), std::string::npos) << all;
+}
+
 // The scene picker cut its descriptions, and a recording's call lines were cut at the column's
 // edge; both wrap now.
 TEST_F(DebuggerDriver, PickerDescriptionsAndCallLinesAreWhole) {

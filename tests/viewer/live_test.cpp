@@ -116,10 +116,14 @@ TEST_F(LiveDriver, PauseHoldsTheGameAndStepLetsOneFramePass) {
   ASSERT_TRUE(until([&] { return live().controllable() && live().lastFrame() >= 10; }));
   dbg().command(Command::pause);  // hold the game
   EXPECT_TRUE(dbg().paused());
-  // Held at its next frame mark: give it time to arrive there, then it plays no more.
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  frames(2);
-  const std::uint64_t played = game.played();
+  // Held at its next frame mark: wait until it arrives there (longer on a loaded machine; a
+  // game that never stops fails here), then it plays no more.
+  std::uint64_t played = game.played();
+  ASSERT_TRUE(until([&] {
+    played = game.played();
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    return game.played() == played;
+  })) << "the held game never stopped";
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   frames(2);
   EXPECT_EQ(game.played(), played) << "the game went on while held";
@@ -206,6 +210,35 @@ TEST_F(LiveDriver, AGameThatConnectsAfterAPauseIsFollowed) {
   EXPECT_TRUE(dbg().followingLive());
   EXPECT_TRUE(until([&] { return dbg().currentTick() >= 20; })) << dbg().currentTick();
   second.stop();
+}
+
+// Once the game has left, Space plays back the frames it sent, as a recording's: it answered
+// "cannot resume: no game is connected" and the buttons still offered to resume the game.
+TEST_F(LiveDriver, AfterTheGameLeavesSpacePlaysBackItsFrames) {
+  const std::string address = listen();
+  {
+    Recorder rec(gameTo(address, true));
+    tvtest::ThreadedGame game(rec);
+    ASSERT_TRUE(until([&] { return live().lastFrame() >= 40; }));
+    game.stop();
+    rec.close();
+  }
+  ASSERT_TRUE(until([&] { return live().ended(); }));
+  frames(2);
+  const std::string before = drawnText("Timeline");
+  EXPECT_EQ(before.find("Resume game"), std::string::npos) << before;
+  EXPECT_NE(before.find("Play (Space)"), std::string::npos) << before;
+  dbg().command(Command::restart);
+  const std::uint64_t first = dbg().currentTick();
+  ASSERT_LT(first, live().lastFrame());
+  dbg().command(Command::pause);  // Space
+  EXPECT_FALSE(dbg().paused());
+  frames(10);
+  EXPECT_GT(dbg().currentTick(), first) << "the kept frames did not play";
+  EXPECT_LT(dbg().currentTick(), live().lastFrame()) << "it jumped to the newest instead";
+  EXPECT_TRUE(dbg().message().empty()) << dbg().message();
+  dbg().command(Command::step);  // O: the next kept frame, not a step sent to no one
+  EXPECT_TRUE(dbg().message().empty()) << dbg().message();
 }
 
 // A port already taken is one clear message, and nothing else changes.

@@ -584,6 +584,9 @@ void drawColumn(Session& s, ViewState& v, const Column& c, Actions& a) {
     if (ImGui::Begin("Scene and mover", nullptr, kFixed)) {
       if (s.comparing()) ImGui::TextColored(colour(pal::kDim), "parameters apply to every compared mover");
       a.add(controlsContents(*sim, v.panels.front()));
+      // Its Overlays checkboxes show the first panel's and set every panel's, as the View menu
+      // does: compared panels draw the same layers.
+      for (auto& st : v.panels) st.overlays = v.panels.front().overlays;
       y = ImGui::GetWindowHeight();
     }
     ImGui::End();
