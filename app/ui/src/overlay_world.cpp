@@ -188,14 +188,18 @@ void drawContactEvents(ImDrawList& dl, const Camera& cam,
       if (phase == ContactPhase::persist) {
         // The steady state is left out where a body is too small on screen to carry a line
         // beside its fill (a zoomed-out crowd would be striped); a change is always marked.
-        if (std::min(cam.toScreenLength(c.bodyRect.w), cam.toScreenLength(c.bodyRect.h)) < 10.0f)
-          continue;
-        // Along the edge, 1.5 px inside the body (towards it along the normal), so it does not
-        // hide a one-way side's dashed line or the other item's edge.
+        const float side =
+            std::min(cam.toScreenLength(c.bodyRect.w), cam.toScreenLength(c.bodyRect.h));
+        if (side < 10.0f) continue;
+        // Along the edge, a little inside the body (towards it along the normal; further in on
+        // a big body): clear of a one-way side's dashed line, the other item's edge and the
+        // traced body's position outlines, which all lie on the edge itself.
         const auto nx = static_cast<float>(c.event.normal.x);
         const auto ny = static_cast<float>(c.event.normal.y);
-        const ImVec2 in{nx * 1.5f, ny * 1.5f};
-        const float inset = std::min(1.0f, 0.25f * std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)));
+        const float depth = std::clamp(0.12f * side, 1.5f, 6.0f);
+        const ImVec2 in{nx * depth, ny * depth};
+        const float inset =
+            std::min(1.0f, 0.25f * std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)));
         const ImVec2 along{ny != 0.0f ? inset : 0.0f, nx != 0.0f ? inset : 0.0f};
         if (a.x == b.x && a.y == b.y) {
           dl.AddCircle(mid, 2.5f, pal::kContactPersist, 8, 1.5f);
