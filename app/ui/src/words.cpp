@@ -150,8 +150,10 @@ Said whatHappened(const MoveTrace& m, const Source& s, const Failure* failed) {
     said.text = did;
     said.brief = first.empty() ? did : first;
   } else {
-    // The failure's first clause: "tunnelled through wall" of "..., 32 from the recorded end".
-    said.brief = said.text.substr(0, std::min(said.text.find(", "), said.text.find(" (")));
+    // The failure's first clause: "tunnelled through wall" of "..., 32 from the recorded end",
+    // "ended inside body 1" of "...; dropped by body 1: ...".
+    said.brief = said.text.substr(
+        0, std::min({said.text.find(", "), said.text.find(" ("), said.text.find("; ")}));
     if (!did.empty()) said.text += " (" + did + ")";
   }
   return said;
