@@ -83,9 +83,12 @@ bool drawHelp(bool* open, ImVec2 pos, ImVec2 size, bool place) {
   ImGui::TextWrapped(
       "Tunnelvision shows, frame by frame, what each move did: the cells it visited (yellow), "
       "the items it tested (magenta), its sweep (white), substeps (violet), hits (red) and what "
-      "the response did (green), and says in words what happened. The Failures tab lists every "
-      "move that failed: click one to go there. A scene's frames are ticks, and a change in the "
-      "panel on the right re-runs it to the same tick; a recording's frames are the game's, "
+      "the response did (green), and says in words what happened. Where bodies read their "
+      "contacts, a contact that began is a gold diamond on the touching edge, one that persists "
+      "a cream line, one that ended a hollow orange diamond; the inspector says what the body "
+      "stands on. The Failures tab lists every move that failed (and every rider a platform "
+      "dropped or popped): click one to go there. A scene's frames are ticks, and a change in "
+      "the panel on the right re-runs it to the same tick; a recording's frames are the game's, "
       "each a list of calls.");
   ImGui::Spacing();
   const ImVec4 key = ImGui::ColorConvertU32ToFloat4(ui::palette::kPixel);

@@ -26,7 +26,7 @@ example="${EXAMPLE:-$root/build/release/app/examples/tv-example-platformer}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 ln -s "$root/levels" "$work/levels"
-if grep -v '^#' "$list" | grep -q 'sample\.tvrec'; then
+if grep -v '^#' "$list" | grep 'sample\.tvrec' > /dev/null; then  # not -q: under pipefail its early exit fails the pipe
   if [[ ! -x "$example" ]]; then
     echo "$(basename "$0"): no tv-example-platformer at '$example' (build it, or set EXAMPLE)" >&2
     exit 2
@@ -57,7 +57,9 @@ unset GALLIUM_DRIVER LIBGL_ALWAYS_SOFTWARE
   echo "violet substeps, red hits (rect at touch, normal, touch point), green response targets,"
   echo "cyan/orange/yellow the physics, render and floored-pixel positions; where a scene has them,"
   echo "brown moving solids, a dashed lime line on a one-way side, and the bodies a moving solid"
-  echo "carried (blue), pushed (pink) or squished (crimson) that tick, and green corner nudges."
+  echo "carried (blue), pushed (pink) or squished (crimson) that tick, green corner nudges, and the"
+  echo "contact events of bodies that read their contacts: a gold diamond where a contact began, a"
+  echo "cream line along an edge that still touches, a hollow orange diamond where one ended."
   echo "The legend in every picture says the same."
 } > "$readme"
 

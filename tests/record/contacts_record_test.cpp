@@ -90,6 +90,40 @@ TEST(ContactsRecording, EveryUpdateIsRecordedAndReplaysBitForBitFromAnyKeyframe)
   EXPECT_EQ(tv::callWords(tv::CallKind::contacts), "Contacts::update");
 }
 
+// What the debugger draws: each call's events as the game got them (CallInfo::contacts, the same
+// lines as the game's log), and the ground the replay recomputes as it stands.
+TEST(ContactsRecording, TheCallsCarryTheGamesEventsAndTheReplayKnowsTheGround) {
+  Walk g;
+  const std::vector<std::uint8_t> file = g.play();
+  tv::Replay replay = tv::Replay::fromBytes(file);
+  std::size_t k = 0;
+  for (std::uint64_t f = 0; f < replay.frames(); ++f) {
+    for (const tv::CallInfo& c : replay.calls(f)) {
+      if (c.kind != tv::CallKind::contacts || c.summary.rfind("Contacts::forget", 0) == 0)
+        continue;
+      std::string line;
+      for (const tv::ContactEvent& e : c.contacts) {
+        EXPECT_EQ(e.item, g.body);
+        line +=
+            std::to_string(static_cast<int>(e.phase)) + ":" + std::to_string(e.other.index) + " ";
+      }
+      ASSERT_LT(k, g.log.size());
+      EXPECT_EQ(line, g.log[k]) << "update " << k;
+      ++k;
+    }
+  }
+  EXPECT_EQ(k, g.log.size());
+  // Before any update is replayed nothing is known; after one, the tile under the body.
+  replay.seek(0, 0);
+  EXPECT_FALSE(replay.ground(g.body).has_value());
+  replay.seek(5);
+  const std::optional<tv::Ground> ground = replay.ground(g.body);
+  ASSERT_TRUE(ground.has_value());
+  EXPECT_EQ(ground->kind, tv::GroundKind::ground);
+  EXPECT_EQ(ground->item, g.tile0);
+  EXPECT_FALSE(replay.ground(g.tile0).has_value()) << "a tile reads no contacts";
+}
+
 TEST(ContactsRecording, AnEventEditedOnDiskDivergesAtThatCall) {
   Walk g;
   std::vector<std::uint8_t> file = g.play();

@@ -64,6 +64,86 @@ TEST_F(DebuggerDriver, AnExactMoverListsNoFailure) {  // the negative control
   EXPECT_TRUE(dbg().checks().failures().entries.empty());
 }
 
+// one-way-rise with carry 0, the negative control: the filter-only one-way platform a bump game
+// writes (teleport the platform, give the rider its velocity). Its drops and pops are failures:
+// one row each, naming the rider and its platform, as many as the scene counts; "go to the first
+// failure" lands on one, traces the rider, and the status row and the inspector name it.
+//
+//     [r]   rider (body 2k)       a drop: the rider ends below the platform's top (into it or
+//    =====  platform (2k + 1)     through it); a pop: above it, not on it
+TEST_F(DebuggerDriver, TheNaivePlatformsDropsAndPopsAreFailuresAndGoLandsOnOne) {
+  // lift-crush: its lifts alone (its naive crushers and doors fill the list with bodies left
+  // inside).
+  for (const std::string_view scene : {"one-way-rise", "lift-crush"}) {
+    std::vector<std::string> args = {"--scene", std::string(scene), "--mover", "continuous",
+                                     "--carry", "0", "--tick", "1"};
+    if (scene == "lift-crush") args.insert(args.end(), {"--solids", "1"});
+    open(args);
+    const ui::FailureList& list = dbg().checks().failures();
+    ASSERT_TRUE(list.complete) << scene;
+    ASSERT_LT(list.entries.size(), ui::Checks::kMaxListed) << scene << ": every failure listed";
+    std::uint64_t drops = 0, pops = 0;
+    std::optional<std::size_t> firstDropOrPop;
+    for (std::size_t k = 0; k < list.entries.size(); ++k) {
+      const ui::Failure& f = list.entries[k].failure;
+      const bool drop = f.kind == ui::FailureKind::dropped;
+      if (!drop && f.kind != ui::FailureKind::popped) continue;
+      ++(drop ? drops : pops);
+      if (!firstDropOrPop) firstDropOrPop = k;
+      EXPECT_TRUE(f.item.valid()) << scene << ": " << f.what;
+      EXPECT_EQ(f.what.rfind(drop ? "dropped by body " : "popped off body ", 0), 0u) << f.what;
+    }
+    const sim::SceneDef& def = sim::findScene(scene);
+    sim::Params p = def.defaults();
+    p.set("carry", 0);
+    if (scene == "lift-crush") p.set("solids", 1);
+    sim::Simulation whole(def, p, MoverSpec{.kind = MoverKind::continuous});
+    (void)whole.run(list.looked);
+    EXPECT_EQ(drops, whole.counters().drops) << scene;
+    EXPECT_EQ(pops, whole.counters().pops) << scene;
+    ASSERT_TRUE(firstDropOrPop.has_value()) << scene << ": the naive platforms drop or pop";
+
+    // A click on a drop (or pop) goes to its tick, traces the rider; the inspector says it.
+    const ui::Failure f = list.entries[*firstDropOrPop].failure;
+    dbg().goToFailure(*firstDropOrPop);
+    frames(3);
+    EXPECT_EQ(dbg().currentTick(), f.frame) << scene;
+    EXPECT_EQ(dbg().session().traced(), f.item) << scene;
+    const std::string details = drawnText("Details");
+    EXPECT_NE(details.find(f.kind == ui::FailureKind::dropped ? "dropped by" : "popped off"),
+              std::string::npos)
+        << details;
+
+    // "Go to the first failure": the status row names the first failure's body.
+    const auto first = ui::firstFailureIndex(list);
+    ASSERT_TRUE(first.has_value());
+    const ui::Failure g = list.entries[*first].failure;
+    dbg().command(Command::firstFailure);
+    frames(3);
+    EXPECT_EQ(dbg().currentTick(), g.frame) << scene;
+    EXPECT_EQ(dbg().session().traced(), g.item) << scene;
+    const std::string row = drawnText("Timeline");
+    const std::string named = dbg().session().primary().describe(g.item);
+    EXPECT_NE(row.find("first failure: tick " + std::to_string(g.frame) + ", continuous: " + named),
+              std::string::npos)
+        << scene << ": the status row names the body: " << row;
+  }
+}
+
+TEST_F(DebuggerDriver, TheExactMovingSolidsListNoDropOrPop) {  // the control
+  for (const std::string_view scene : {"one-way-rise", "lift-crush"}) {
+    for (const char* mover : {"sweep", "continuous", "pixel"}) {
+      open({"--scene", std::string(scene), "--mover", mover, "--tick", "1"});
+      const ui::FailureList& list = dbg().checks().failures();
+      ASSERT_TRUE(list.complete) << scene;
+      for (const auto& e : list.entries) {
+        EXPECT_NE(e.failure.kind, ui::FailureKind::dropped) << scene << " " << mover;
+        EXPECT_NE(e.failure.kind, ui::FailureKind::popped) << scene << " " << mover;
+      }
+    }
+  }
+}
+
 // A click goes to that frame, traces that item, centres and zooms on it, and the inspector
 // shows the failing panel's move, in words.
 TEST_F(DebuggerDriver, AClickOnAFailureGoesThereTracesCentresAndZooms) {

@@ -2,10 +2,13 @@
 // (on a thread of its own, as a real game would be), the debugger driven frame by frame.
 #include "driver.hpp"
 
+#include <atomic>
 #include <filesystem>
+#include <thread>
 
 #include "record/live_kit.hpp"
 #include "tv/record/replay.hpp"
+#include "tv/sim/simulation.hpp"
 #include "tv/ui/live_source.hpp"
 
 namespace tv::viewer {
@@ -69,6 +72,40 @@ TEST_F(LiveDriver, FramesShowAsTheyArriveAndTheViewFollowsTheNewest) {
   dbg().command(Command::pause);
   ASSERT_TRUE(until([&] { return dbg().currentTick() > at + 10; }));
   game.stop();
+}
+
+// A live game whose bodies read their contacts (the one-way-rise scene streaming, on a thread of
+// its own): the debugger shows its contact events and grounds as it shows a recording's, and the
+// legend lists their colours.
+TEST_F(LiveDriver, AGamesContactEventsAndGroundAreShownLive) {
+  const std::string address = listen();
+  Recorder rec(gameTo(address, false));
+  std::atomic<bool> stop{false};
+  const sim::SceneDef& scene = sim::findScene("one-way-rise");
+  sim::Simulation sim(scene, scene.defaults(), parseMover("continuous"));
+  const ItemId rider = sim.bodies()[0].item, platform = sim.bodies()[1].item;
+  sim.attach(rec);
+  std::thread game([&] {
+    for (int t = 0; t < 400 && !stop.load(); ++t) {
+      sim.tick();
+      rec.frame();
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  });
+  ASSERT_TRUE(until([&] { return live().connected() && dbg().currentTick() >= 10; }));
+  dbg().command(Command::pause);
+  frames(2);
+  ui::Source& src = dbg().session().primary();
+  EXPECT_TRUE(src.hasContacts());
+  bool riderEvent = false;
+  for (const sim::ContactAt& e : src.contactEvents()) riderEvent |= e.event.item == rider;
+  EXPECT_TRUE(riderEvent) << "frame " << dbg().currentTick();
+  const auto g = src.ground(rider);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_EQ(g->item, platform) << "the rider stands on its platform";
+  stop.store(true);
+  game.join();
+  sim.detach();
 }
 
 // Pausing in the debugger pauses a game that allows it; Step lets one frame pass.

@@ -18,14 +18,14 @@ namespace {
 constexpr double kFarAway = 64.0;
 
 struct Counts {
-  std::uint64_t tunnelled, overlaps, escapes, snags, jitter, misses;
+  std::uint64_t tunnelled, overlaps, escapes, snags, jitter, misses, drops, pops;
 };
 
 Counts countsOf(const sim::Simulation& s) {
   const sim::Counters& c = s.counters();
   // Misses count only where the scene calls them failures (not an exact graze).
   return {c.tunnelled, c.overlaps, c.escapes, c.snags, c.jitter,
-          s.scene().missesFail ? c.misses : 0};
+          s.scene().missesFail ? c.misses : 0, c.drops, c.pops};
 }
 
 // The first failure kind in which `a` is worse than `b`, e.g. "tunnelled".
@@ -36,6 +36,8 @@ const char* worse(const Counts& a, const Counts& b) {
   if (a.snags > b.snags) return "snagged on a seam";
   if (a.jitter > b.jitter) return "jittered";
   if (a.misses > b.misses) return "missed";
+  if (a.drops > b.drops) return "dropped a rider";
+  if (a.pops > b.pops) return "popped a rider";
   return nullptr;
 }
 
@@ -129,19 +131,35 @@ void Checks::noteSceneFailures() {
   // than it failed where another did not. Every mover is checked, and every one that failed at
   // this tick is named.
   Counts best = countsOf(*sims_.front());
-  if (sims_.size() == 1) best = {0, 0, 0, 0, 0, 0};
+  if (sims_.size() == 1) best = {0, 0, 0, 0, 0, 0, 0, 0};
   for (const auto& s : sims_) {
     const Counts c = countsOf(*s);
     best = {std::min(best.tunnelled, c.tunnelled), std::min(best.overlaps, c.overlaps),
             std::min(best.escapes, c.escapes),     std::min(best.snags, c.snags),
-            std::min(best.jitter, c.jitter),       std::min(best.misses, c.misses)};
+            std::min(best.jitter, c.jitter),       std::min(best.misses, c.misses),
+            std::min(best.drops, c.drops),         std::min(best.pops, c.pops)};
   }
-  for (const auto& s : sims_) {
-    const char* what = worse(countsOf(*s), best);
+  std::size_t failing = 0, panel = 0;
+  for (std::size_t k = 0; k < sims_.size(); ++k) {
+    const sim::Simulation& s = *sims_[k];
+    const char* what = worse(countsOf(s), best);
     if (!what) continue;
     failure_ = known_;
     if (!failureText_.empty()) failureText_ += ", ";
-    failureText_ += s->moverSpec().name() + " " + what;
+    failureText_ += s.moverSpec().name() + " " + what;
+    ++failing;
+    panel = k;
+  }
+  if (failing != 1) return;
+  // One mover failed here: name the body, as its row in the Failures tab does ("continuous:
+  // body 0 dropped by body 1").
+  for (const FailureList::Entry& e : list_.entries) {
+    if (e.panel != panel || e.failure.frame != known_ || !e.failure.item.valid()) continue;
+    const std::string& what = e.failure.what;
+    failureText_ = sims_[panel]->moverSpec().name() + ": " +
+                   session_->panel(std::min(panel, session_->size() - 1)).describe(e.failure.item) +
+                   " " + what.substr(0, what.find(':'));
+    return;
   }
 }
 

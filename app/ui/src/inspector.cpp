@@ -120,6 +120,71 @@ void traceDetails(const Source& s, const MoveTrace& m) {
   }
 }
 
+const char* phaseWord(ContactPhase p) {
+  switch (p) {
+    case ContactPhase::begin:
+      return "begins";
+    case ContactPhase::persist:
+      return "persists";
+    case ContactPhase::end:
+      return "ends";
+  }
+  return "?";
+}
+
+ImU32 phaseColour(ContactPhase p) {
+  return p == ContactPhase::begin     ? pal::kContactBegin
+         : p == ContactPhase::persist ? pal::kContactPersist
+                                      : pal::kContactEnd;
+}
+
+// One line per contact event, in the phase's colour: "begins: platform 3  normal +0,-1".
+void eventLine(const Source& s, const ContactEvent& e) {
+  ImGui::TextColored(colour(phaseColour(e.phase)), "contact %s:", phaseWord(e.phase));
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s  normal %+.0f,%+.0f%s", s.describe(e.other).c_str(), e.normal.x + 0.0,
+                     e.normal.y + 0.0,
+                     e.met && e.phase != ContactPhase::end ? " (met in passing)" : "");
+}
+
+// What the item stands on after its last contacts update, where the source knows it.
+void groundLine(const Source& s, ItemId id) {
+  const auto g = s.ground(id);
+  if (!g) return;
+  switch (g->kind) {
+    case GroundKind::air:
+      ImGui::TextWrapped("ground: in the air (%d update%s)", g->updatesInAir,
+                         g->updatesInAir == 1 ? "" : "s");
+      return;
+    case GroundKind::coyote:
+      ImGui::TextWrapped("ground: coyote time, left %s %d update%s ago",
+                         s.describe(g->item).c_str(), g->updatesInAir,
+                         g->updatesInAir == 1 ? "" : "s");
+      return;
+    case GroundKind::ground:
+    case GroundKind::oneWay:
+    case GroundKind::solid:
+      break;
+  }
+  const char* kind = g->kind == GroundKind::oneWay  ? "one-way platform"
+                     : g->kind == GroundKind::solid ? "moving solid"
+                                                    : "ground";
+  if (g->velocity.x == 0.0 && g->velocity.y == 0.0) {
+    ImGui::TextWrapped("ground: on %s (%s), still", s.describe(g->item).c_str(), kind);
+  } else {
+    ImGui::TextWrapped("ground: on %s (%s), moving (%.4g, %.4g) per update",
+                       s.describe(g->item).c_str(), kind, g->velocity.x + 0.0,
+                       g->velocity.y + 0.0);
+  }
+}
+
+// The item's contact events in the frame on screen and its ground.
+void contactLines(const Source& s, ItemId id) {
+  groundLine(s, id);
+  for (const sim::ContactAt& e : s.contactEvents())
+    if (e.event.item == id) eventLine(s, e.event);
+}
+
 void callContents(const Source& s, const CallInfo& c, const FailureList* list, std::size_t panel) {
   ImGui::TextWrapped("call %u of %s %" PRIu64 ": %s", c.index, frameWord(s), c.frame,
                      std::string(tv::callWords(c.kind)).c_str());
@@ -133,6 +198,8 @@ void callContents(const Source& s, const CallInfo& c, const FailureList* list, s
     const TracedMove tm{c.frame, *m};
     const auto failed = failureFor(s, tm, list, panel);
     saidLine(whatHappened(*m, s, failed ? &*failed : nullptr));
+    // A scene's body reads its contacts right after its move: the same call, to a game.
+    if (s.sim()) contactLines(s, c.item);
     // A recording says where the game's move ended; a re-run that ends elsewhere says so.
     if (s.replay() && m->final != c.position) {
       ImGui::PushStyleColor(ImGuiCol_Text, colour(s.openLoop() ? pal::kRender : pal::kBad));
@@ -141,6 +208,10 @@ void callContents(const Source& s, const CallInfo& c, const FailureList* list, s
       ImGui::PopStyleColor();
     }
     traceDetails(s, *m);
+  } else if (c.kind == CallKind::contacts) {
+    // The events the game got from this call, and what the item stands on after it.
+    groundLine(s, c.item);
+    for (const ContactEvent& e : c.contacts) eventLine(s, e);
   } else if (c.kind == CallKind::queryRect || c.kind == CallKind::queryPoint ||
              c.kind == CallKind::querySegment || c.kind == CallKind::anyOverlap) {
     ImGui::TextColored(colour(pal::kDim), "%u results recorded (a query sweeps nothing)", c.hits);
@@ -191,6 +262,7 @@ void inspectorContents(const Source& s, const FailureList* failures, std::size_t
     ImGui::TextColored(colour(pal::kDim), "not in the world at this %s", frameWord(s));
   }
   if (body) ImGui::TextWrapped("velocity (%.1f, %.1f) px/s", body->velocity.x, body->velocity.y);
+  contactLines(s, id);
   const auto moves = s.history();
   if (moves.empty()) {
     // Say why: a body that has stopped makes no move, so there is nothing to trace; an item

@@ -1,5 +1,6 @@
 // The world itself: spatial-hash cells, solids and bodies.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "draw_util.hpp"
@@ -133,6 +134,88 @@ void drawCornerNudges(ImDrawList& dl, const Camera& cam, const WorldPicture& pic
 
 }  // namespace
 
+std::pair<Vec2, Vec2> contactEdge(const sim::ContactAt& c) {
+  const Rect& a = c.bodyRect;
+  const Rect& b = c.otherRect;
+  const Vec2 n = c.event.normal;
+  if (n.x == 0.0 && n.y == 0.0) {
+    const double x0 = std::max(a.x, b.x), x1 = std::min(a.right(), b.right());
+    const double y0 = std::max(a.y, b.y), y1 = std::min(a.bottom(), b.bottom());
+    const Vec2 m = x0 <= x1 && y0 <= y1 ? Vec2{(x0 + x1) / 2, (y0 + y1) / 2} : a.center();
+    return {m, m};
+  }
+  // The normal points from the other item towards the body: the body's edge facing it is the
+  // one on the other side of the normal (standing on it, (0, −1): the body's bottom).
+  if (n.y != 0.0) {
+    const double y = n.y < 0.0 ? a.bottom() : a.y;
+    double x0 = std::max(a.x, b.x), x1 = std::min(a.right(), b.right());
+    if (!(x0 < x1)) x0 = a.x, x1 = a.right();
+    return {{x0, y}, {x1, y}};
+  }
+  const double x = n.x < 0.0 ? a.right() : a.x;
+  double y0 = std::max(a.y, b.y), y1 = std::min(a.bottom(), b.bottom());
+  if (!(y0 < y1)) y0 = a.y, y1 = a.bottom();
+  return {{x, y0}, {x, y1}};
+}
+
+namespace {
+
+void diamond(ImDrawList& dl, ImVec2 c, float r, ImU32 colour, bool filled) {
+  const ImVec2 d[4] = {{c.x, c.y - r}, {c.x + r, c.y}, {c.x, c.y + r}, {c.x - r, c.y}};
+  if (filled) {
+    dl.AddConvexPolyFilled(d, 4, colour);
+    dl.AddPolyline(d, 4, pal::kContactRim, ImDrawFlags_Closed, 1.0f);
+  } else {
+    // A dark rim under the colour: an end reads on a light fill and on the dark background.
+    dl.AddPolyline(d, 4, pal::kContactRim, ImDrawFlags_Closed, 3.5f);
+    dl.AddPolyline(d, 4, colour, ImDrawFlags_Closed, 1.5f);
+  }
+}
+
+}  // namespace
+
+void drawContactEvents(ImDrawList& dl, const Camera& cam,
+                       std::span<const sim::ContactAt> events) {
+  // Persisting contacts first, then ends, then begins: a change reads over the steady state.
+  constexpr float kMarker = 4.5f;  // px: the same at every zoom, so both window sizes read
+  for (const ContactPhase phase : {ContactPhase::persist, ContactPhase::end, ContactPhase::begin}) {
+    for (const sim::ContactAt& c : events) {
+      if (c.event.phase != phase) continue;
+      if (!cam.sees(c.bodyRect) && !cam.sees(c.otherRect)) continue;
+      const auto [from, to] = contactEdge(c);
+      const ImVec2 a = cam.toScreen(from), b = cam.toScreen(to);
+      const ImVec2 mid{(a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f};
+      if (phase == ContactPhase::persist) {
+        // The steady state is left out where a body is too small on screen to carry a line
+        // beside its fill (a zoomed-out crowd would be striped); a change is always marked.
+        const float side =
+            std::min(cam.toScreenLength(c.bodyRect.w), cam.toScreenLength(c.bodyRect.h));
+        if (side < 10.0f) continue;
+        // Along the edge, a little inside the body (towards it along the normal; further in on
+        // a big body): clear of a one-way side's dashed line, the other item's edge and the
+        // traced body's position outlines, which all lie on the edge itself.
+        const auto nx = static_cast<float>(c.event.normal.x);
+        const auto ny = static_cast<float>(c.event.normal.y);
+        const float depth = std::clamp(0.12f * side, 1.5f, 6.0f);
+        const ImVec2 in{nx * depth, ny * depth};
+        const float inset =
+            std::min(1.0f, 0.25f * std::max(std::abs(b.x - a.x), std::abs(b.y - a.y)));
+        const ImVec2 along{ny != 0.0f ? inset : 0.0f, nx != 0.0f ? inset : 0.0f};
+        if (a.x == b.x && a.y == b.y) {
+          dl.AddCircle(mid, 2.5f, pal::kContactPersist, 8, 1.5f);
+        } else {
+          dl.AddLine({a.x + in.x + along.x, a.y + in.y + along.y},
+                     {b.x + in.x - along.x, b.y + in.y - along.y}, pal::kContactPersist, 2.0f);
+        }
+        continue;
+      }
+      diamond(dl, mid, kMarker,
+              phase == ContactPhase::begin ? pal::kContactBegin : pal::kContactEnd,
+              phase == ContactPhase::begin);
+    }
+  }
+}
+
 void drawSolids(ImDrawList& dl, const Camera& cam, std::span<const sim::Solid> solids) {
   // Edges only once a tile is big enough on screen that they do not swallow its fill.
   const bool edges = solids.empty() || cam.toScreenLength(solids.front().rect.w) >= 6.0f;
@@ -189,6 +272,9 @@ void drawWorld(ImDrawList& dl, const Camera& cam, const WorldPicture& pic, const
     if (on.pixelGrid && cam.scale() >= kPixelGridScale) drawPixelGrid(dl, cam);
     if (on.positions) drawPositions(dl, cam, physics, render, on.labels);
   }
+  // Over everything: a contact's marker sits on a body's edge, where the traced move's hit and
+  // the positions' outlines would hide it.
+  if (on.bodies) drawContactEvents(dl, cam, pic.contactEvents);
   dl.PopClipRect();
 }
 

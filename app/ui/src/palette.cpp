@@ -37,6 +37,9 @@ std::span<const LegendEntry> legend() {
       {kPushed, Swatch::arrow, "pushed by a solid", false, kWithMovingSolids},
       {kSquished, Swatch::fill, "squished", false, kWithMovingSolids},
       {kNudge, Swatch::arrow, "corner nudge", false, kWithCornerNudge},
+      {kContactBegin, Swatch::diamond, "contact begins", false, kWithContacts},
+      {kContactPersist, Swatch::line, "contact persists", false, kWithContacts},
+      {kContactEnd, Swatch::hollowDiamond, "contact ends", false, kWithContacts},
   };
   return kEntries;
 }

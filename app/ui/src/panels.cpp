@@ -383,6 +383,7 @@ palette::LegendScope legendScopeOf(const Source& source) {
       if (b.maxNudge > 0.0) scope.has |= pal::kWithCornerNudge;
     }
   }
+  if (source.hasContacts()) scope.has |= pal::kWithContacts;
   return scope;
 }
 
@@ -427,6 +428,18 @@ void legendContents(int columns, palette::LegendScope scope) {
       case pal::Swatch::dot:
         dl.AddCircleFilled(mid, 3.5f, e.colour);
         break;
+      case pal::Swatch::diamond:
+      case pal::Swatch::hollowDiamond: {
+        const float r = (b.x - a.x) * 0.4f;
+        const ImVec2 d[4] = {{mid.x, mid.y - r}, {mid.x + r, mid.y}, {mid.x, mid.y + r},
+                             {mid.x - r, mid.y}};
+        if (e.swatch == pal::Swatch::diamond) {
+          dl.AddConvexPolyFilled(d, 4, e.colour);
+        } else {
+          dl.AddPolyline(d, 4, e.colour, ImDrawFlags_Closed, 2.0f);
+        }
+        break;
+      }
       case pal::Swatch::dashed:
         for (float x = a.x; x < b.x; x += 4.0f) {
           dl.AddLine({x, a.y + 0.5f}, {x + 2, a.y + 0.5f}, e.colour);

@@ -62,6 +62,7 @@ void ReplaySource::goTo(std::uint64_t f) {
   if (!next) return rebuild();
   divergence_.reset();
   callTraced_ = false;
+  contactEvents_.clear();
   stepFrame(frame_, calls_, calls_.size());
   trimHistory();
 }
@@ -84,6 +85,7 @@ void ReplaySource::rebuild() {
   callTraced_ = false;
   divergence_.reset();
   pictureDivergence_.reset();
+  contactEvents_.clear();
   primed_ = false;
   if (replay_.frames() == 0) return;
   const std::uint64_t from = frame_ > history_ ? frame_ - history_ : 0;
@@ -112,8 +114,12 @@ void ReplaySource::rebuild() {
 void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
                                  std::size_t end) {
   // Stepping a frame's last call leaves the replay at the next frame's start (or at the end of
-  // the one it stepped): either is the same world, but only the first can be stepped on.
-  if (replay_.frame() != f || replay_.call() != 0) replay_.seek(f, 0);
+  // the one it stepped): either is the same world. From the end of the frame before, step on
+  // into this one: a seek would rebuild the world at a keyframe, and the replay's contacts
+  // would forget their history (a ground's velocity, an end).
+  const bool onFromBefore = f > 0 && replay_.frame() + 1 == f &&
+                            replay_.call() >= replay_.callCount(f - 1) && !replay_.atEnd();
+  if (!onFromBefore && (replay_.frame() != f || replay_.call() != 0)) replay_.seek(f, 0);
   for (std::size_t k = 0; k < end; ++k) {
     const CallInfo& c = here[k];
     const bool isCall = f == frame_ && call_ && k == *call_;
@@ -121,6 +127,13 @@ void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
         traces(c) && (isCall || (selected_ && c.item.valid() && c.item == *selected_));
     MoveTrace t;
     std::optional<Divergence> d = replay_.step(traced ? &t : nullptr);
+    if (replay_.frame() == f && replay_.call() == k) {
+      // The step only entered the frame, reporting that its keyframe differs from the world:
+      // that divergence is this frame's, and the call is the next step.
+      if (d && exact() && !pictureDivergence_) pictureDivergence_ = d;
+      if (d && f == frame_ && !divergence_) divergence_ = std::move(d);
+      d = replay_.step(traced ? &t : nullptr);
+    }
     if (d && exact() && !pictureDivergence_) pictureDivergence_ = d;
     // The frame on screen's own, for the inspector's call.
     if (d && f == frame_ && !divergence_) divergence_ = std::move(d);
@@ -129,7 +142,24 @@ void ReplaySource::stepFrame(std::uint64_t f, const std::vector<CallInfo>& here,
       moves_.push_back({f, std::move(t)});
       callTraced_ = isCall;
     }
+    if (c.kind == CallKind::contacts) noteContacts(f, c);
   }
+}
+
+void ReplaySource::noteContacts(std::uint64_t f, const CallInfo& c) {
+  // A what-if's world is not the one the game's events came from: it shows none.
+  if (!exact()) return;
+  sawContacts_ = true;
+  if (f != frame_) return;
+  const World& w = replay_.world();
+  const Rect at = w.has(c.item) ? w.rect(c.item) : Rect{};
+  for (const ContactEvent& e : c.contacts)
+    contactEvents_.push_back({0, e, at, w.has(e.other) ? w.rect(e.other) : at});
+}
+
+std::optional<Ground> ReplaySource::ground(ItemId id) const {
+  // The replay stands where the picture was drawn: its tracker's ground is the picture's.
+  return exact() ? replay_.ground(id) : std::nullopt;
 }
 
 void ReplaySource::trimHistory() {
@@ -216,6 +246,7 @@ WorldPicture ReplaySource::picture() {
   p.nudges = nudges_;
   p.selected = selectedBody;
   p.moves = moves_;
+  p.contactEvents = contactEvents_;
   return p;
 }
 

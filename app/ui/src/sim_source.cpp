@@ -99,8 +99,15 @@ std::optional<Failure> SimSource::failureOf(const TracedMove& m) const {
   std::optional<Failure> found;
   for (const Failure& f : recent_) {
     if (f.frame != m.tick || f.item != m.trace.item) continue;
-    // A failure before a busy move: what went wrong before how much work it took.
-    if (!found || (found->kind == FailureKind::busy && f.kind != FailureKind::busy)) found = f;
+    // A failure before a busy move: what went wrong before how much work it took. A rider's
+    // drop or pop is told beside the move's own failure ("ended inside body 1; dropped by
+    // body 1: ..."): the Failures tab lists it, so a click on it must find it said here.
+    const bool platform = f.kind == FailureKind::dropped || f.kind == FailureKind::popped;
+    if (!found || (found->kind == FailureKind::busy && f.kind != FailureKind::busy)) {
+      found = f;
+    } else if (platform && found->what.find(f.what) == std::string::npos) {
+      found->what += "; " + f.what;
+    }
   }
   return found;
 }
@@ -351,9 +358,20 @@ WorldPicture SimSource::picture() {
   p.renderRects = renderRects_;
   p.contacts = sim_.solidContacts();
   p.nudges = sim_.cornerNudges();
+  p.contactEvents = sim_.contactEvents();
   p.selected = body_;
   p.moves = moves_;
   return p;
+}
+
+std::optional<Ground> SimSource::ground(ItemId id) const {
+  const auto b = bodyOf(id);
+  return b ? sim_.ground(*b) : std::nullopt;
+}
+
+bool SimSource::hasContacts() const {
+  const auto bodies = sim_.bodies();
+  return std::any_of(bodies.begin(), bodies.end(), [](const sim::Body& b) { return b.contacts; });
 }
 
 double SimSource::followMinSide() const {

@@ -36,6 +36,10 @@ const char* failureKindName(FailureKind k) {
       return "diverged";
     case FailureKind::busy:
       return "many responses";
+    case FailureKind::dropped:
+      return "dropped";
+    case FailureKind::popped:
+      return "popped";
   }
   return "?";
 }

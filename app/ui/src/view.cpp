@@ -346,7 +346,7 @@ void onePanel(Session& s, ViewState& v, ImVec2 origin, ImVec2 size, float side, 
   const palette::LegendScope scope = legendScopeOf(src);
   st.coveredBottom = detail::legendOverlay(
       origin, {worldW, size.y},
-      std::min(worldW > 700.0f ? 4 : 3, legendColumns(worldW - 2 * kMargin, scope)), scope);
+      std::min(4, legendColumns(worldW - 2 * kMargin, scope)), scope);
   drawColumn(s, v, {origin.x + worldW, origin.y, side, size.y}, a);
 }
 

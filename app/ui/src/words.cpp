@@ -51,6 +51,16 @@ std::optional<Failure> failureOf(const sim::Simulation& sim, const sim::TickEven
       f.kind = FailureKind::snagged;
       f.what = "snagged on a seam of the floor";
       break;
+    case Counted::dropped:
+      f.kind = FailureKind::dropped;
+      f.what = "dropped by " + named(source, e.other) +
+               ": fell into or through the platform it stood on";
+      break;
+    case Counted::popped:
+      f.kind = FailureKind::popped;
+      f.what = "popped off " + named(source, e.other) +
+               ": left above the platform it stood on, not on it";
+      break;
     case Counted::manyCollisions:
       f.kind = FailureKind::busy;
       f.what = std::to_string(e.collisions) + " responses in one move";
@@ -140,8 +150,10 @@ Said whatHappened(const MoveTrace& m, const Source& s, const Failure* failed) {
     said.text = did;
     said.brief = first.empty() ? did : first;
   } else {
-    // The failure's first clause: "tunnelled through wall" of "..., 32 from the recorded end".
-    said.brief = said.text.substr(0, std::min(said.text.find(", "), said.text.find(" (")));
+    // The failure's first clause: "tunnelled through wall" of "..., 32 from the recorded end",
+    // "ended inside body 1" of "...; dropped by body 1: ...".
+    said.brief = said.text.substr(
+        0, std::min({said.text.find(", "), said.text.find(" ("), said.text.find("; ")}));
     if (!did.empty()) said.text += " (" + did + ")";
   }
   return said;

@@ -87,7 +87,7 @@ std::uint32_t bits(const JsonAt& at) {
 LevelBody readBody(const JsonAt& at) {
   onlyKeys(at, {"rect", "motion", "velocity", "speed", "direction", "jump", "falls", "response",
                 "role", "layer", "mask", "group", "state", "active", "solid", "oneWay",
-                "maxNudge"});
+                "maxNudge", "contacts"});
   LevelBody lb;
   sim::Body& b = lb.body;
   b.rect = at["rect"].rect();
@@ -138,6 +138,7 @@ LevelBody readBody(const JsonAt& at) {
   if (auto v = at.find("solid")) b.solid = v->boolean();
   if (auto v = at.find("oneWay")) b.oneWay = v->boolean();
   if (auto v = at.find("maxNudge")) b.maxNudge = v->number(0.0, 1e9);  // corner correction
+  if (auto v = at.find("contacts")) b.contacts = v->boolean();
   if (auto v = at.find("layer")) b.layer = bits(*v);
   if (auto v = at.find("mask")) b.mask = bits(*v);
   if (auto v = at.find("group")) b.group = bits(*v);
@@ -252,6 +253,7 @@ Json bodyJson(const LevelBody& lb) {
   if (b.solid) j["solid"] = true;
   if (b.oneWay) j["oneWay"] = true;
   if (b.maxNudge > 0.0) j["maxNudge"] = b.maxNudge;
+  if (b.contacts) j["contacts"] = true;
   return j;
 }
 

@@ -515,6 +515,7 @@ std::vector<CallInfo> Replay::calls(std::uint64_t frame) const {
               ends += e.phase == ContactPhase::end;
             }
             info.hits = static_cast<std::uint32_t>(c.contacts.size());
+            info.contacts = c.contacts;
             info.summary = std::string(c.forget ? "Contacts::forget " : "Contacts::update ") + who +
                            ": " + std::to_string(begins) + " begin, " +
                            std::to_string(c.contacts.size() - begins - ends) + " persist, " +

@@ -683,6 +683,12 @@ std::uint64_t Replay::frame() const {
 std::uint32_t Replay::call() const {
   return impl_->callIndex;
 }
+std::optional<Ground> Replay::ground(ItemId id) const {
+  const Impl& d = *impl_;
+  if (d.whatIf() || d.contactsSeen.count(id) == 0) return std::nullopt;
+  return d.contacts.ground(id);
+}
+
 const World& Replay::world() const {
   return *impl_->world;
 }

@@ -112,6 +112,7 @@ SceneSetup buildPlatformer(const Params& p) {
     Body b = makeBody({start.x, start.y, c.size, c.size}, BodyRole::player, kLayerPlayer,
                       kLayerSolid, response::slide, {}, static_cast<std::uint32_t>(i));
     b.falls = true;
+    b.contacts = true;  // as a platformer reads its player's ground and touches
     s.bodies.push_back(b);
   }
   const double jump = std::sqrt(2.0 * gravity * 3.5 * t);  // clears 3.5 tiles

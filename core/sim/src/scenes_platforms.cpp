@@ -67,18 +67,16 @@ class OneWayRiseRules final : public SceneRules {
 
   void afterTick(TickContext& ctx) const override {
     for (std::size_t k = 0; k < columns_; ++k) {
-      const Rect& p = ctx.bodies[2 * k + 1].rect;
+      const Body& platform = ctx.bodies[2 * k + 1];
+      const Rect& p = platform.rect;
       Body& rider = ctx.bodies[2 * k];
       const Rect& r = rider.rect;
-      if (overlaps(r, p)) ++ctx.counters.overlaps;
+      // Counted by name: the tools list each as the rider's, against its platform.
+      if (overlaps(r, p)) ctx.count(Counted::overlapped, 2 * k, platform.item);
       // A rider's `state` is 1 while it is off its platform: each departure counts once.
       const bool on = onTop(r, p);
       if (!on && rider.state == 0) {
-        if (r.bottom() > p.y) {
-          ++ctx.counters.drops;
-        } else {
-          ++ctx.counters.pops;
-        }
+        ctx.count(r.bottom() > p.y ? Counted::dropped : Counted::popped, 2 * k, platform.item);
       }
       rider.state = on ? 0 : 1;
     }
@@ -110,6 +108,7 @@ SceneSetup buildOneWayRise(const Params& p) {
                           BodyRole::walker, kLayerPlayer, kLayerSolid, response::slide, {},
                           group(k));
     rider.falls = true;
+    rider.contacts = true;  // a game reads what its riders stand on
     s.bodies.push_back(rider);
     Body platform = makeBody({x, top, width, thick}, BodyRole::block, kPlatformLayer, 0,
                              response::slide, {0.0, -v}, group(k));
@@ -264,19 +263,16 @@ class LiftCrushRules final : public SceneRules {
   void afterTick(TickContext& ctx) const override {
     for (const PressLane& l : lanes_) {
       const Rect& s = ctx.bodies[l.solid].rect;
+      const ItemId solid = ctx.bodies[l.solid].item;
+      // Counted by name: the tools list each as the body's, against its lane's solid.
       for (std::size_t i = l.first; i < l.first + l.count; ++i) {
         Body& b = ctx.bodies[i];
         const Rect& r = b.rect;
-        if (inside(ctx, r)) ++ctx.counters.overlaps;
+        if (inside(ctx, r)) ctx.count(Counted::overlapped, i);
         if (l.kind == Press::lift) {
           const bool on = onTop(r, s);
-          if (!on && (b.state & kOffLift) == 0) {
-            if (r.bottom() > s.y) {
-              ++ctx.counters.drops;
-            } else {
-              ++ctx.counters.pops;
-            }
-          }
+          if (!on && (b.state & kOffLift) == 0)
+            ctx.count(r.bottom() > s.y ? Counted::dropped : Counted::popped, i, solid);
           b.state = on ? (b.state & ~kOffLift) : (b.state | kOffLift);
         } else {
           // The crusher comes down, the door goes right: a body it passed is above it, left of
@@ -284,7 +280,7 @@ class LiftCrushRules final : public SceneRules {
           const Rect& f = l.backstop;
           const bool passed = l.kind == Press::crusher ? r.bottom() <= s.y || r.y >= f.bottom()
                                                        : r.right() <= s.x || r.x >= f.right();
-          if (passed && (b.state & kPassed) == 0) ++ctx.counters.tunnelled;
+          if (passed && (b.state & kPassed) == 0) ctx.count(Counted::tunnelled, i, solid);
           b.state = passed ? (b.state | kPassed) : (b.state & ~kPassed);
         }
       }
@@ -360,6 +356,7 @@ SceneSetup buildLiftCrush(const Params& p) {
                         std::uint32_t mask) {
     Body b = makeBody({x, placeBefore(floorTop, s), s, s}, role, layer, mask, response::slide, {});
     b.falls = true;
+    b.contacts = true;  // a game reads what its bodies stand on
     return b;
   };
   const double width = 7 * t;
@@ -595,6 +592,7 @@ SceneSetup buildCornerNudge(const Params& p) {
       Body b = makeBody({at.x, at.y, s, s}, BodyRole::player, kLayerPlayer, kLayerSolid,
                         response::slide, {}, static_cast<std::uint32_t>(k));
       b.falls = true;
+      b.contacts = true;  // a game reads its player's ground and touches
       b.maxNudge = correct ? nudge : 0.0;
       out.bodies.push_back(b);
       starts.push_back(at);

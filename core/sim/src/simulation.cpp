@@ -65,6 +65,48 @@ MoverSpec resolveMover(MoverSpec spec, const Params& params) {
 
 }  // namespace
 
+void TickContext::count(Counted what, std::size_t i, ItemId other) {
+  Counters& c = counters;
+  switch (what) {
+    case Counted::tunnelled:
+      ++c.tunnelled;
+      break;
+    case Counted::farPushOut:
+      ++c.farPushOuts;
+      break;
+    case Counted::missed:
+      ++c.misses;
+      break;
+    case Counted::escaped:
+      ++c.escapes;
+      break;
+    case Counted::overlapped:
+      ++c.overlaps;
+      break;
+    case Counted::jittered:
+      ++c.jitter;
+      break;
+    case Counted::snagged:
+      ++c.snags;
+      break;
+    case Counted::dropped:
+      ++c.drops;
+      break;
+    case Counted::popped:
+      ++c.pops;
+      break;
+    case Counted::manyCollisions:
+      return;
+  }
+  if (!named) return;
+  TickEvent e;
+  e.tick = tick + 1;
+  e.body = static_cast<std::int64_t>(i);
+  e.what = what;
+  e.other = other;
+  named->push_back(e);
+}
+
 // [SECTION] building ------------------------------------------------------------------------------
 
 Simulation::Simulation(const SceneDef& scene, const Params& params, MoverSpec mover,
@@ -96,6 +138,11 @@ void Simulation::build(SceneSetup setup) {
   events_.clear();
   contacts_.clear();
   nudges_.clear();
+  contactEvents_.clear();
+  tracker_ = Contacts{};
+  contactOneWay_.clear();
+  contactSolids_.clear();
+  readsContacts_ = false;
   world_ = World(setup.cellSize);
   gravity_ = setup.gravity;
   rules_ = std::move(setup.rules);
@@ -127,6 +174,18 @@ void Simulation::build(SceneSetup setup) {
     b.item = world_.add(b.rect);
     grow(b.item);
     bodyBySlot_[b.item.index] = static_cast<std::int32_t>(i);
+  }
+  // What a game's contacts know of its level: which items are one-way platforms (ground kind
+  // oneWay) and which are moving solids (kind solid; a one-way moving platform stays oneWay).
+  for (std::size_t k = 0; k < solids_.size(); ++k)
+    if (solids_[k].oneWay) contactOneWay_.push_back(solidItems_[k]);
+  for (const Body& b : bodies_) {
+    readsContacts_ = readsContacts_ || b.contacts;
+    if (b.oneWay) {
+      contactOneWay_.push_back(b.item);
+    } else if (b.solid || b.layer == kLayerSolid) {
+      contactSolids_.push_back(b.item);
+    }
   }
   previous_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i) previous_[i] = bodies_[i].rect.position();
@@ -187,7 +246,8 @@ bool Simulation::finished() const {
 }
 
 TickContext Simulation::context(double dt) {
-  return {bodies_, counters_, world_, tick_, dt, previous_, bodyBySlot_, tagBySlot_, oneWayBySlot_};
+  return {bodies_,     counters_,  world_,        tick_,  dt, previous_,
+          bodyBySlot_, tagBySlot_, oneWayBySlot_, &events_};
 }
 
 void Simulation::syncWorld(std::size_t i) {
@@ -216,6 +276,7 @@ void Simulation::stepOrThrow(double dt) {
   events_.clear();
   contacts_.clear();
   nudges_.clear();
+  contactEvents_.clear();
   TickContext ctx = context(dt);
   if (rules_) {
     rules_->control(ctx);
@@ -229,9 +290,10 @@ void Simulation::stepOrThrow(double dt) {
   }
   if (rules_) {
     const Counters before = counters_;
+    const std::size_t mark = events_.size();
     rules_->afterTick(ctx);
     for (std::size_t i = 0; i < bodies_.size(); ++i) syncWorld(i);
-    noteCounted(before, -1, {}, 0);
+    noteCounted(before, -1, {}, 0, mark);
   }
   ++tick_;
   record();
@@ -311,21 +373,48 @@ void Simulation::moveOneByOne(TickContext& ctx, double dt) {
                                           : mover_.move(world_, b.item, goal, filter,
                                                         traced ? &trace_ : nullptr);
     b.rect = world_.rect(b.item);
+    // As a game reads its player's contacts: right after its move, what it met included.
+    if (b.contacts) readContacts(i, filter, r.collisions);
     b.velocity = respondVelocity(b.velocity, r.collisions);
     ++counters_.moves;
     counters_.collisions += r.collisions.size();
     if (traced) noteTrace();
     if (rules_) {
       const Counters before = counters_;
+      const std::size_t mark = events_.size();
       rules_->afterMove(ctx, i, goal, r.collisions);
       syncWorld(i);
       noteCounted(before, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
-                  r.collisions.size());
+                  r.collisions.size(), mark);
     } else if (manyCollisions_ > 0 && r.collisions.size() > manyCollisions_) {
       noteCounted(counters_, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
-                  r.collisions.size());
+                  r.collisions.size(), events_.size());
     }
   }
+}
+
+void Simulation::readContacts(std::size_t body, const Filter& filter,
+                              std::span<const Collision> met) {
+  ContactOptions o;
+  o.filter = filter;
+  o.oneWay = contactOneWay_;
+  o.solids = contactSolids_;
+  const Rect at = bodies_[body].rect;
+  for (const ContactEvent& e : tracker_.update(world_, bodies_[body].item, o, met)) {
+    // An end's other item may have left the world: it is drawn where the body is.
+    const Rect other = world_.has(e.other) ? world_.rect(e.other) : at;
+    contactEvents_.push_back({body, e, at, other});
+  }
+}
+
+std::optional<Ground> Simulation::ground(std::size_t i) const {
+  if (i >= bodies_.size()) {
+    fail("tv::sim::Simulation::ground", "body " + std::to_string(i) +
+                                            " does not exist (there are " +
+                                            std::to_string(bodies_.size()) + ")");
+  }
+  if (!bodies_[i].contacts) return std::nullopt;
+  return tracker_.ground(bodies_[i].item);
 }
 
 MoveResult Simulation::moveCornered(std::size_t body, Vec2 goal, const Filter& filter) {
@@ -345,15 +434,21 @@ MoveResult Simulation::moveCornered(std::size_t body, Vec2 goal, const Filter& f
 }
 
 void Simulation::noteCounted(const Counters& before, std::int64_t body, const Rect& start,
-                             std::size_t collisions) {
+                             std::size_t collisions, std::size_t mark) {
   // Most moves count nothing: one compare of the failure counters and out.
   const Counters& now = counters_;
   const bool counted = now.tunnelled != before.tunnelled || now.farPushOuts != before.farPushOuts ||
                        now.misses != before.misses || now.escapes != before.escapes ||
                        now.overlaps != before.overlaps || now.jitter != before.jitter ||
-                       now.snags != before.snags;
+                       now.snags != before.snags || now.drops != before.drops ||
+                       now.pops != before.pops;
   const bool many = body >= 0 && manyCollisions_ > 0 && collisions > manyCollisions_;
   if (!counted && !many) return;
+  // What the rules counted by name (TickContext::count, since `mark`) is listed already: only
+  // the rest is this move's (or, after the tick, no one body's).
+  std::uint64_t named[static_cast<std::size_t>(Counted::manyCollisions) + 1] = {};
+  for (std::size_t k = mark; k < events_.size(); ++k)
+    named[static_cast<std::size_t>(events_[k].what)] += events_[k].count;
   TickEvent e;
   e.tick = tick_ + 1;
   e.body = body;
@@ -365,7 +460,8 @@ void Simulation::noteCounted(const Counters& before, std::int64_t body, const Re
     outcome = judgeMove(world_, b.item, start, b.rect, filter);
   }
   const auto add = [&](Counted what, std::uint64_t was, std::uint64_t is, ItemId other) {
-    if (is == was) return;
+    was += named[static_cast<std::size_t>(what)];
+    if (is <= was) return;
     e.what = what;
     e.count = is - was;
     e.other = other;
@@ -378,6 +474,8 @@ void Simulation::noteCounted(const Counters& before, std::int64_t body, const Re
   add(Counted::overlapped, before.overlaps, now.overlaps, outcome.endedInside);
   add(Counted::jittered, before.jitter, now.jitter, {});
   add(Counted::snagged, before.snags, now.snags, {});
+  add(Counted::dropped, before.drops, now.drops, {});
+  add(Counted::popped, before.pops, now.pops, {});
   if (many) add(Counted::manyCollisions, 0, 1, {});
 }
 
@@ -403,10 +501,11 @@ void Simulation::moveBatched(TickContext& ctx, double dt) {
     counters_.collisions += out.collisions.size();
     if (rules_) {
       const Counters before = counters_;
+      const std::size_t mark = events_.size();
       rules_->afterMove(ctx, i, batchMoves_[k].goal, out.collisions);
       syncWorld(i);
       noteCounted(before, static_cast<std::int64_t>(i), b.rect.at(previous_[i]),
-                  out.collisions.size());
+                  out.collisions.size(), mark);
     }
   }
 }
@@ -439,6 +538,8 @@ void Simulation::record() {
   s.traceStats = traceStats_;
   s.contacts = contacts_;
   s.nudges = nudges_;
+  s.contactEvents = contactEvents_;
+  if (readsContacts_) s.tracker = tracker_;
   // Only the pixel mover keeps state between moves (its sub-pixel remainders); copying the
   // others would cost a little every tick and restore nothing.
   s.hasMover = mover_.spec().kind == MoverKind::pixel;
@@ -464,6 +565,8 @@ void Simulation::restore(std::uint64_t t) {
   traceStats_ = s.traceStats;
   contacts_ = s.contacts;
   nudges_ = s.nudges;
+  contactEvents_ = s.contactEvents;
+  if (readsContacts_) tracker_ = s.tracker;
   if (s.hasMover) mover_ = s.mover;
   tick_ = t;
   traceValid_ = false;

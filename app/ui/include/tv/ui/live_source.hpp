@@ -62,6 +62,14 @@ class LiveSource final : public Source {
 
   [[nodiscard]] const World& world() const override;
   [[nodiscard]] WorldPicture picture() override;
+  /// The replay's (its Contacts::update calls' events and grounds), as for a recording.
+  [[nodiscard]] std::span<const sim::ContactAt> contactEvents() const override {
+    return replay_ ? replay_->contactEvents() : std::span<const sim::ContactAt>();
+  }
+  [[nodiscard]] std::optional<Ground> ground(ItemId id) const override {
+    return replay_ ? replay_->ground(id) : std::nullopt;
+  }
+  [[nodiscard]] bool hasContacts() const override { return replay_ && replay_->hasContacts(); }
   [[nodiscard]] Rect home() const override;
   [[nodiscard]] double followMinSide() const override;
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 
 #include "imgui.h"
 #include "tv/sim/body.hpp"
@@ -65,6 +66,9 @@ struct WorldPicture {
   std::span<const sim::SolidContact> contacts;
   /// The corner corrections made in the last tick (a scene's bodies with Body::maxNudge).
   std::span<const sim::CornerNudgeAt> nudges;
+  /// Contact events of the frame (tv::Contacts updates: a scene's bodies with Body::contacts, a
+  /// recording's Contacts::update calls), each with where both items stood at the update.
+  std::span<const sim::ContactAt> contactEvents;
   std::optional<std::size_t> selected;
   /// The selected body's recent moves, oldest first; the last is drawn in full.
   std::span<const TracedMove> moves;
@@ -82,6 +86,14 @@ void drawGrid(ImDrawList& dl, const Camera& cam, const World& world, const Overl
 void drawCellCounts(ImDrawList& dl, const Camera& cam, const World& world);
 void drawSolids(ImDrawList& dl, const Camera& cam, std::span<const sim::Solid> solids);
 void drawBodies(ImDrawList& dl, const Camera& cam, const WorldPicture& pic);
+/// Contact events on the touching edge: a begin a filled diamond, an end a hollow one, a contact
+/// that persists a thin line along the edge just inside the body.
+void drawContactEvents(ImDrawList& dl, const Camera& cam,
+                       std::span<const sim::ContactAt> events);
+/// Where a contact touches, in world units: the shared part of the body's edge facing `other`
+/// (by the event's normal), or the body's whole edge when they no longer share one (an end);
+/// for an overlap (normal 0), the centre of the overlap, as a segment of length 0.
+[[nodiscard]] std::pair<Vec2, Vec2> contactEdge(const sim::ContactAt& c);
 /// What a move covered — visited cells and the swept hull — drawn under the solids and bodies.
 void drawMoveBackdrop(ImDrawList& dl, const Camera& cam, const Grid& grid, const MoveTrace& move,
                       const Overlays& on);

@@ -64,6 +64,17 @@ inline constexpr ImU32 kSquished = IM_COL32(210, 30, 80, 255);
 /// and beside it, nudged, with an arrow.
 inline constexpr ImU32 kNudge = IM_COL32(0, 240, 0, 255);
 
+// -- contact events (tv/contact.hpp) -------------------------------------------------------------
+/// A contact that began this tick (tv::ContactPhase::begin): a filled diamond on the touching
+/// edge, outlined dark so it reads on any fill.
+inline constexpr ImU32 kContactBegin = IM_COL32(255, 196, 0, 255);
+/// A contact that persists: a thin line along the touching edge, just inside the body.
+inline constexpr ImU32 kContactPersist = IM_COL32(255, 236, 170, 255);
+/// A contact that ended this tick: a hollow diamond where the edge last touched.
+inline constexpr ImU32 kContactEnd = IM_COL32(255, 110, 60, 255);
+/// The outline that keeps a contact marker readable on a light fill.
+inline constexpr ImU32 kContactRim = IM_COL32(20, 20, 20, 230);
+
 // -- where the body is drawn -------------------------------------------------------------------
 inline constexpr ImU32 kPhysics = IM_COL32(80, 220, 255, 255);
 inline constexpr ImU32 kRender = IM_COL32(255, 150, 50, 255);
@@ -97,7 +108,7 @@ inline constexpr ImU32 kCompareTints[] = {
 [[nodiscard]] ImU32 categoryColour(std::string_view category);
 
 /// How a legend entry is drawn: its swatch's shape says which overlay primitive it is.
-enum class Swatch { fill, outline, line, arrow, dot, dashed };
+enum class Swatch { fill, outline, line, arrow, dot, dashed, diamond, hollowDiamond };
 
 struct LegendEntry {
   ImU32 colour;
@@ -107,13 +118,14 @@ struct LegendEntry {
   /// legend leaves it out.
   bool recordedOnly = false;
   /// Only drawn where there are such things (kWithOneWay, kWithMovingSolids,
-  /// kWithCornerNudge): other views leave it out.
+  /// kWithCornerNudge, kWithContacts): other views leave it out.
   std::uint8_t onlyWith = 0;
 };
 
 inline constexpr std::uint8_t kWithOneWay = 1;        ///< a one-way side in the view's world
 inline constexpr std::uint8_t kWithMovingSolids = 2;  ///< a solid the scene moves
 inline constexpr std::uint8_t kWithCornerNudge = 4;   ///< a body with corner correction
+inline constexpr std::uint8_t kWithContacts = 8;  ///< bodies that read their contacts (events)
 
 /// Which of the legend's optional entries a view lists: only those it can draw, so the legend
 /// takes no height from the view for colours that cannot appear in it.

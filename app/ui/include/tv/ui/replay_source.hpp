@@ -67,6 +67,11 @@ class ReplaySource final : public Source {
 
   [[nodiscard]] const World& world() const override { return replay_.world(); }
   [[nodiscard]] WorldPicture picture() override;
+  [[nodiscard]] std::span<const sim::ContactAt> contactEvents() const override {
+    return contactEvents_;
+  }
+  [[nodiscard]] std::optional<Ground> ground(ItemId id) const override;
+  [[nodiscard]] bool hasContacts() const override { return sawContacts_; }
   /// Everything in the world at this frame, padded (a default square for an empty world).
   [[nodiscard]] Rect home() const override;
   [[nodiscard]] double followMinSide() const override;
@@ -111,6 +116,7 @@ class ReplaySource final : public Source {
   void rebuild();
   void stepFrame(std::uint64_t f, const std::vector<CallInfo>& calls, std::size_t end);
   void trimHistory();
+  void noteContacts(std::uint64_t f, const CallInfo& c);
   /// Replays the recording as it is (not a what-if), so a difference is a divergence.
   [[nodiscard]] bool exact() const { return !replay_.options().mover.has_value(); }
 
@@ -138,6 +144,10 @@ class ReplaySource final : public Source {
   std::string terrain_;           // the category of the level's geometry (drawn as solids)
   std::vector<sim::Body> bodies_;
   std::size_t history_ = 8;  // frames re-traced before the one on screen
+  // The frame on screen's contact events (Contacts::update calls up to the selected call), and
+  // whether any such call has been replayed: the legend lists contacts from then on.
+  std::vector<sim::ContactAt> contactEvents_;
+  bool sawContacts_ = false;
 };
 
 }  // namespace tv::ui

@@ -56,6 +56,11 @@ class SimSource final : public Source {
   [[nodiscard]] std::optional<Failure> failureOf(const TracedMove& m) const override;
 
   [[nodiscard]] const World& world() const override { return sim_.world(); }
+  [[nodiscard]] std::span<const sim::ContactAt> contactEvents() const override {
+    return sim_.contactEvents();
+  }
+  [[nodiscard]] std::optional<Ground> ground(ItemId id) const override;
+  [[nodiscard]] bool hasContacts() const override;
   [[nodiscard]] WorldPicture picture() override;
   [[nodiscard]] Rect home() const override { return sim_.camera(); }
   [[nodiscard]] double followMinSide() const override;

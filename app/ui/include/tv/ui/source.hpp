@@ -55,6 +55,8 @@ enum class FailureKind : std::uint8_t {
   jittered,     ///< a resting body moved with nothing pushing it
   diverged,     ///< the replay's result differs from the recording
   busy,         ///< made more responses than the threshold in one move
+  dropped,      ///< a rider that fell into or through the platform it stood on
+  popped,       ///< a rider left above its platform, not on it (thrown or left behind)
 };
 [[nodiscard]] const char* failureKindName(FailureKind k);
 
@@ -131,6 +133,19 @@ class Source {
   [[nodiscard]] virtual const World& world() const = 0;
   /// What the world view draws now (valid until the next call that changes the source).
   [[nodiscard]] virtual WorldPicture picture() = 0;
+  /// The contact events of the frame on screen (up to the selected call), each with where both
+  /// items stood at the update: a scene's bodies that read their contacts, a recording's
+  /// Contacts::update calls. Empty where nothing reads contacts, and in a what-if (its re-run
+  /// world is not the one the game's events came from).
+  [[nodiscard]] virtual std::span<const sim::ContactAt> contactEvents() const { return {}; }
+  /// What `id` stands on after its last contacts update, where known.
+  [[nodiscard]] virtual std::optional<Ground> ground(ItemId id) const {
+    (void)id;
+    return std::nullopt;
+  }
+  /// True when items here read their contacts (the legend lists the contact colours): a scene's
+  /// bodies with Body::contacts; a recording once a Contacts::update has been replayed.
+  [[nodiscard]] virtual bool hasContacts() const { return false; }
   /// "Frame everything": a scene's camera, a recording's whole world.
   [[nodiscard]] virtual Rect home() const = 0;
   /// The least side of a followed view: a few movers' widths, so a 2 px bullet's move is seen

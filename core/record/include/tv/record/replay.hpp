@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "tv/contact.hpp"
 #include "tv/corner.hpp"
 #include "tv/error.hpp"  // what they throw
 #include "tv/mover.hpp"
@@ -44,6 +45,7 @@ struct CallInfo {
   Vec2 position;             ///< moves: where the recording says it ended
   std::uint32_t hits = 0;    ///< moves: collisions recorded; queries: items found
   std::string mover;         ///< moverMove: the mover's name
+  std::vector<ContactEvent> contacts;  ///< contacts: the events the game got, as recorded
   std::string summary;       ///< one line: "move player (12, 40) -> (15, 40): 2 hits"
 };
 
@@ -222,6 +224,13 @@ class Replay {
   [[nodiscard]] std::uint32_t call() const;  ///< index of the next call in frame()
   /// The replayed world as it stands (read only: the replay owns it).
   [[nodiscard]] const World& world() const;
+  /// What `id` stood on at the last Contacts::update of it replayed (the replay's own tracker,
+  /// recomputed through core with the recorded filter's answers). Its kind is `ground` or
+  /// `oneWay` (the filter answered oneway): the game's lists of one-way items and moving solids
+  /// are not recorded. Nullopt when no update of it has been replayed since the world was
+  /// rebuilt (a seek starts at a keyframe), after a forget, and in a what-if (which does not
+  /// replay contacts).
+  [[nodiscard]] std::optional<Ground> ground(ItemId id) const;
   /// True once the last call of the last frame has been stepped.
   [[nodiscard]] bool atEnd() const;
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 
+#include "tv/contact.hpp"
 #include "tv/geometry.hpp"
 #include "tv/item.hpp"
 #include "tv/response.hpp"
@@ -47,6 +48,12 @@ struct Body {
   /// this much), whatever the simulation's mover; 0: by the mover. Its moves are not traced
   /// (tv::moveCornered keeps no MoveTrace).
   double maxNudge = 0.0;
+  /// Reads its contacts after each of its moves, as a platformer's player does (tv::Contacts,
+  /// with the move's collisions as `met`, the scene's one-way items and moving solids listed):
+  /// the simulation keeps each tick's contact events and the body's ground
+  /// (Simulation::contactEvents, Simulation::ground). A query: it changes nothing. Not read in
+  /// a batched scene (tv::Batch moves every body at once).
+  bool contacts = false;
 };
 
 /// What the scenes count. Each scene documents which counters it uses and what they mean;
@@ -97,6 +104,45 @@ struct CornerNudgeAt {
   ItemId ceiling;        ///< the ceiling whose corner it clipped
   Rect from;             ///< the body where it met the corner
   Rect to;               ///< the body nudged beside it (from, moved by dx)
+};
+
+/// A counter the scene's rules raised, and whose move raised it.
+enum class Counted : std::uint8_t {
+  tunnelled,       ///< Counters::tunnelled
+  farPushOut,      ///< Counters::farPushOuts
+  missed,          ///< Counters::misses
+  escaped,         ///< Counters::escapes
+  overlapped,      ///< Counters::overlaps
+  jittered,        ///< Counters::jitter
+  snagged,         ///< Counters::snags
+  dropped,         ///< Counters::drops
+  popped,          ///< Counters::pops
+  manyCollisions,  ///< not a counter: a move reported more than `manyCollisions()` collisions
+};
+
+/// Something counted in a tick: the tools list these to go straight to what failed.
+struct TickEvent {
+  std::uint64_t tick = 0;  ///< the tick's number once it has run (ticks() after it)
+  /// The body whose move the rules were judging when they counted (afterMove), or the body the
+  /// rules named (TickContext::count); -1 when counted after every body moved (afterTick)
+  /// without naming one.
+  std::int64_t body = -1;
+  Counted what = Counted::tunnelled;  ///< which counter rose
+  std::uint64_t count = 1;  ///< how much the counter rose
+  /// What the move passed through (tunnelled, farPushOut) or ended inside (overlapped), as
+  /// tv::judgeMove finds it with the simulation's filter, or what the rules named (the
+  /// platform a rider dropped through); invalid when unknown or not asked.
+  ItemId other;
+  std::size_t collisions = 0;  ///< collisions the move reported
+};
+
+/// A contact event of a body that reads its contacts (Body::contacts), with where the two
+/// items stood when it was read.
+struct ContactAt {
+  std::size_t body = 0;  ///< the body whose contacts were read
+  ContactEvent event;    ///< begin, persist or end; the other item; the normal towards the body
+  Rect bodyRect;         ///< the body at the update
+  Rect otherRect;        ///< the other item at the update (an end: where it is now)
 };
 
 /// The velocity after one collision, by the collision's response (all in px/s):

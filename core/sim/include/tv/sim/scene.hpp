@@ -63,6 +63,15 @@ struct TickContext {
   std::span<const std::int32_t> bodyBySlot;  ///< world slot -> body index, or -1 for a solid
   std::span<const std::uint8_t> tagBySlot;   ///< world slot -> the solid's tag (0 for bodies)
   std::span<const std::uint8_t> oneWayBySlot;  ///< world slot -> 1 for a one-way solid
+  /// Where count() names the bodies it counts for (the simulation's events); null: it only
+  /// counts.
+  std::vector<TickEvent>* named = nullptr;
+
+  /// Raises the counter of `what` by one for body `i`, naming it (and `other`, what it failed
+  /// against, if known), so the tools list the failure as that body's. Rules that count after
+  /// every body moved (afterTick) use it instead of raising a counter themselves, which the
+  /// tools can tie to no body. Counted::manyCollisions is not a counter: it is ignored.
+  void count(Counted what, std::size_t i, ItemId other = {});
 
   /// Index of the body whose item this is, or -1 (a solid).
   [[nodiscard]] std::int32_t bodyOf(ItemId id) const {

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "tv/batch.hpp"
+#include "tv/contact.hpp"
 #include "tv/mover.hpp"
 #include "tv/sim/body.hpp"
 #include "tv/sim/params.hpp"
@@ -38,37 +39,12 @@ namespace tv::sim {
 /// How much history a Simulation keeps, and its frame clamp.
 struct SimConfig {
   /// Ticks kept for `stepBack` and `seek`, counting the current one; >= 1. Default 600
-  /// (10 s at 60 Hz). Memory: about 40 bytes per body per tick.
+  /// (10 s at 60 Hz). Memory: about 40 bytes per body per tick, and some 300 more per body that
+  /// reads its contacts (Body::contacts: its tv::Contacts state is kept too).
   std::size_t snapshotCapacity = 600;
   /// Longest frame `frame()` counts, s (the spiral-of-death guard); raised to dt when dt is
   /// longer. Finite and > 0. Default 0.25.
   double maxFrameTime = 0.25;
-};
-
-/// A counter the scene's rules raised, and whose move raised it.
-enum class Counted : std::uint8_t {
-  tunnelled,       ///< Counters::tunnelled
-  farPushOut,      ///< Counters::farPushOuts
-  missed,          ///< Counters::misses
-  escaped,         ///< Counters::escapes
-  overlapped,      ///< Counters::overlaps
-  jittered,        ///< Counters::jitter
-  snagged,         ///< Counters::snags
-  manyCollisions,  ///< not a counter: a move reported more than `manyCollisions()` collisions
-};
-
-/// Something counted in a tick: the tools list these to go straight to what failed.
-struct TickEvent {
-  std::uint64_t tick = 0;  ///< the tick's number once it has run (ticks() after it)
-  /// The body whose move the rules were judging when they counted (afterMove); -1 when counted
-  /// after every body moved (afterTick), which is no one body's.
-  std::int64_t body = -1;
-  Counted what = Counted::tunnelled;  ///< which counter rose
-  std::uint64_t count = 1;  ///< how much the counter rose
-  /// What the move passed through (tunnelled, farPushOut) or ended inside (overlapped), as
-  /// tv::judgeMove finds it with the simulation's filter; invalid when unknown or not asked.
-  ItemId other;
-  std::size_t collisions = 0;  ///< collisions the move reported
 };
 
 /// What tracing saw (not part of the state: tracing never changes results).
@@ -200,6 +176,14 @@ class Simulation {
   /// The corner corrections (Body::maxNudge) made in the last tick, in body order; kept with
   /// each snapshot as solidContacts. Not part of the state.
   [[nodiscard]] std::span<const CornerNudgeAt> cornerNudges() const { return nudges_; }
+  /// The contact events of the last tick of the bodies that read their contacts
+  /// (Body::contacts), body by body in body order, each body's in tv::Contacts' order; kept with
+  /// each snapshot as solidContacts. Not part of the state.
+  [[nodiscard]] std::span<const ContactAt> contactEvents() const { return contactEvents_; }
+  /// What body `i` stands on after its last update (tv::Contacts::ground); nullopt for a body
+  /// that does not read its contacts. Restored with each snapshot. Throws tv::Error for a body
+  /// that does not exist.
+  [[nodiscard]] std::optional<Ground> ground(std::size_t i) const;
   /// Moves reporting more collisions than `n` are listed in events() (0, the default: none).
   void setManyCollisions(std::size_t n) { manyCollisions_ = n; }
   /// The threshold setManyCollisions set (0: off).
@@ -218,6 +202,8 @@ class Simulation {
     TraceStats traceStats;  // so stepping back through history does not count moves twice
     std::vector<SolidContact> contacts;
     std::vector<CornerNudgeAt> nudges;
+    std::vector<ContactAt> contactEvents;
+    Contacts tracker;  // only in scenes whose bodies read their contacts
     bool hasMover = false;
     Mover mover;  // only movers with per-item state (pixel); others keep none between moves
   };
@@ -229,12 +215,13 @@ class Simulation {
   void moveBatched(TickContext& ctx, double dt);
   void moveSolids(double dt);  // the bodies that are moving solids, by tv::moveSolid
   MoveResult moveCornered(std::size_t body, Vec2 goal, const Filter& filter);
+  void readContacts(std::size_t body, const Filter& filter, std::span<const Collision> met);
   void record();
   void restore(std::uint64_t t);
   void syncWorld(std::size_t i);
   void noteTrace();
   void noteCounted(const Counters& before, std::int64_t body, const Rect& start,
-                   std::size_t collisions);
+                   std::size_t collisions, std::size_t mark);
   [[nodiscard]] ResponseId respond(ItemId item, ItemId other) const;
   [[nodiscard]] TickContext context(double dt);
 
@@ -274,6 +261,12 @@ class Simulation {
   std::vector<TickEvent> events_;
   std::vector<SolidContact> contacts_;
   std::vector<CornerNudgeAt> nudges_;
+  // Contacts of the bodies that read them (Body::contacts): the game's tracker, and the items it
+  // lists as one-way platforms and as moving solids.
+  bool readsContacts_ = false;
+  Contacts tracker_;
+  std::vector<ContactAt> contactEvents_;
+  std::vector<ItemId> contactOneWay_, contactSolids_;
   std::vector<Collision> cornered_;  // the last corner-corrected move's collisions
   std::size_t manyCollisions_ = 0;
   std::vector<BatchMove> batchMoves_;
