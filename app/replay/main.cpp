@@ -441,7 +441,9 @@ int main(int argc, char** argv) {
     if (o.stats) return stats(r);
     if (o.mover) return whatIf(r, o);
     return summary(r);
-  } catch (const tv::Error& e) {
+  } catch (const std::exception& e) {
+    // tv::Error for a file that cannot be read or is not a recording; anything else (memory)
+    // is said in words too, never left to abort the program.
     std::cerr << "tv-replay: " << tv::app::userMessage(e) << "\n";
     return 2;
   }
