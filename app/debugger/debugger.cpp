@@ -627,6 +627,11 @@ void Debugger::reportError(const std::string& what) {
   if (!view_.panels.empty()) view_.panels[0].error = what;
 }
 
+void Debugger::clearError() {
+  if (!view_.panels.empty() && view_.panels[0].error == message_) view_.panels[0].error.clear();
+  message_.clear();
+}
+
 // -- tuning --------------------------------------------------------------------------------------
 
 void Debugger::applyActions(const ui::Actions& a) {

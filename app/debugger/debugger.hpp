@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl_window.hpp"
@@ -43,9 +44,12 @@ class OpenRecordingDialog {
  public:
   void open() { open_ = true; }
   [[nodiscard]] std::optional<std::string> draw();
+  /// The path was changed since the last call (an error about the old one no longer applies).
+  [[nodiscard]] bool takeEdited() { return std::exchange(edited_, false); }
 
  private:
   bool open_ = false;
+  bool edited_ = false;
   std::string path_;
 };
 
@@ -161,6 +165,8 @@ class Debugger {
   void frameAll();
   void traceBusiest();
   void reportError(const std::string& what);
+  /// Takes back what reportError said (the person changed what it was about).
+  void clearError();
   /// A live game: what arrived, and the newest frame while following.
   void refreshLive();
   [[nodiscard]] ui::LiveSource* liveSource();
