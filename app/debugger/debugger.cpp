@@ -12,6 +12,7 @@
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
 #include "tv/ui/still.hpp"
+#include "tv/ui/tick_progress.hpp"
 #include "tv/record/live.hpp"
 #include "tv/ui/live_source.hpp"
 
@@ -140,7 +141,11 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
     }
     if (o.body) select(session_->primary().sim()->simulation().bodies()[*o.body].item);
     try {
+      // A far tick runs before the window opens: how far it has got is said on stderr.
+      ui::TickProgress progress("tv-debugger", "--tick " + std::to_string(o.ticks.front()));
+      ui::TickProgress::attach(*session_, &progress);
       goTo(o.ticks.front(), true);
+      ui::TickProgress::attach(*session_, nullptr);
       if (currentTick() < o.ticks.front()) {
         throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) +
                              ": the scene ends at tick " + std::to_string(currentTick())};
@@ -295,6 +300,11 @@ void Debugger::loadScene(const sim::SceneDef& scene) {
 }
 
 void Debugger::openFile(const std::string& path) {
+  // A recording typed into the level picker (or dropped) opens as what it is.
+  if (path.ends_with(".tvrec")) {
+    tryOpenRecording(path);
+    return;
+  }
   const app::SceneSource file = app::SceneSource::forFile(path);
   try {
     const sim::SceneDef& scene = file.scene();  // throws naming the file, JSON path and value
