@@ -190,6 +190,10 @@ void Debugger::setPinned(bool pinned) {
 }
 
 void Debugger::store(Settings& s) const {
+  // What belongs to the person, whatever is open: Help has been seen (it opened on every start
+  // of someone who only opens recordings), the playback rate.
+  s.setBool("help.seen", true);
+  s.setNumber("speed", speed_);
   if (!scene_) return;  // a recording leaves the scene settings as they were
   s.set("scene", scene_->name);
   std::string names;
@@ -200,9 +204,7 @@ void Debugger::store(Settings& s) const {
   s.set("movers", names);
   s.setBool("overlay", view_.overlaid);
   s.setBool("follow", follow_);
-  s.setNumber("speed", speed_);
   s.setNumber("render-hz", view_.panels[0].renderHz);
-  s.setBool("help.seen", true);
   s.set("params.scene", scene_->name);
   for (std::size_t i = 0; i < params_.specs().size(); ++i)
     s.setNumber("param." + params_.specs()[i].name, params_.values()[i]);
