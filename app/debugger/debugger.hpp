@@ -87,7 +87,7 @@ class Debugger {
   /// (nothing changes). `tryOpenRecording` shows the error instead (a dropped file).
   void openRecording(const std::string& path);
   void tryOpenRecording(const std::string& path);
-  /// Opens a Tiled map or a scene file (File > Open file..., or dropped on the window); a bad
+  /// Opens a Tiled map or a scene file (File > Open level file..., Ctrl+O, or dropped on the window); a bad
   /// file is reported in the window and changes nothing.
   void openFile(const std::string& path);
   /// The same source re-run by `movers` beside it (a scene's comparison, a recording's what-if
@@ -209,7 +209,7 @@ class Debugger {
   bool showSweep_ = false;
   bool showWhatIf_ = false;
   bool openPicker_ = false;
-  bool focusPath_ = false;  // File > Open file...: the picker opens with its path field focused
+  bool focusPath_ = false;  // File > Open level file...: the picker opens with its path field focused
   bool quit_ = false;
   bool pinned_ = false;
   bool waited_ = false;     // the last frame waited for input (its time is not a frame's cost)
