@@ -367,16 +367,37 @@ void Debugger::show(std::uint64_t f, std::optional<std::uint32_t> k,
   view_.revealCall = true;
 }
 
+namespace {
+bool sameMover(const MoverSpec& a, const MoverSpec& b) {
+  return a.name() == b.name() && a.maxStep == b.maxStep;
+}
+}  // namespace
+
 void Debugger::compareWith(const std::vector<MoverSpec>& movers, bool updatesAsMoves) {
   try {
     if (isScene()) {
+      // A mover beside itself shows nothing new and its failures would be listed twice.
+      const MoverSpec shown = this->movers().front();
+      for (std::size_t i = 0; i < movers.size(); ++i) {
+        const bool twice = sameMover(movers[i], shown) ||
+                           std::any_of(movers.begin(), movers.begin() + static_cast<std::ptrdiff_t>(i),
+                                       [&](const MoverSpec& m) { return sameMover(m, movers[i]); });
+        if (twice) fail("what-if", movers[i].name() + " is already shown: pick another mover");
+      }
       std::vector<MoverSpec> all = {this->movers().front()};
       all.insert(all.end(), movers.begin(), movers.end());
       setMovers(std::move(all));
       return;
     }
     // A recording: the recorded run as it is (frame, call, traced item), and one what-if run
-    // per mover beside it.
+    // per mover beside it, each once.
+    for (std::size_t i = 0; i < movers.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (sameMover(movers[i], movers[j])) {
+          fail("what-if", movers[i].name() + " is already shown: pick another mover");
+        }
+      }
+    }
     std::vector<std::unique_ptr<ui::Source>> panels;
     const ui::ReplaySource& recorded = *session_->primary().replay();
     for (const MoverSpec& m : movers) panels.push_back(recorded.whatIf(m, updatesAsMoves));
@@ -890,13 +911,36 @@ void Debugger::run(Command c) {
       }
       break;
     case Command::overlay:
-      view_.overlaid = !view_.overlaid;
+      // Only compared panels can be overlaid: flipping a setting nobody sees changed how the
+      // next what-if opened.
+      if (session_->comparing()) {
+        view_.overlaid = !view_.overlaid;
+      } else {
+        notice_ = "overlaid (V) is for compared movers: compare first (C, or W for a what-if)";
+      }
       break;
     case Command::sweep:
       showSweep_ = isScene() && !showSweep_;
       break;
     case Command::whatIf:
       showWhatIf_ = !showWhatIf_;
+      if (showWhatIf_) {
+        // Offer a mover that is not shown yet (the dialog kept the last one picked, often the
+        // mover on screen: run beside itself it shows nothing new).
+        const std::vector<MoverSpec> shown = movers();
+        const auto isShown = [&](const MoverSpec& m) {
+          return std::any_of(shown.begin(), shown.end(),
+                             [&](const MoverSpec& s) { return sameMover(s, m); });
+        };
+        if (isShown(draftWhatIf_)) {
+          for (const MoverEntry& m : moverTable()) {
+            if (!isShown(m.spec)) {
+              draftWhatIf_ = m.spec;
+              break;
+            }
+          }
+        }
+      }
       break;
     case Command::items:
       view_.showTab = ui::Tab::items;

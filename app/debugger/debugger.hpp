@@ -141,6 +141,9 @@ class Debugger {
   [[nodiscard]] bool idle() const;
   /// What the status bar says now, in order (tests read it; the bar drops what does not fit).
   [[nodiscard]] std::vector<std::string> status() const;
+  /// The status when no mover failed where another did not: "no failure in N ticks", or how
+  /// many failures the movers share.
+  [[nodiscard]] std::string noFailureWords() const;
 
  private:
   // -- sources and time (debugger.cpp) -------------------------------------------------------

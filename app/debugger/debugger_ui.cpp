@@ -439,9 +439,16 @@ std::vector<std::string> Debugger::status() const {
     }
   }
   if (!checks_.firstFailure() && checks_.done() && isScene()) {
-    out.push_back("no failure in " + std::to_string(checks_.known()) + " ticks");
+    out.push_back(noFailureWords());
   }
   return out;
+}
+
+std::string Debugger::noFailureWords() const {
+  const std::size_t listed = checks_.failures().entries.size();
+  if (listed == 0) return "no failure in " + std::to_string(checks_.known()) + " ticks";
+  return "no mover fails more than another, but " + std::to_string(listed) +
+         " failures are listed (Failures tab)";
 }
 
 void Debugger::drawTimeline(ImVec2 display, float h) {
@@ -627,9 +634,10 @@ void Debugger::drawTimeline(ImVec2 display, float h) {
       }
     }
     if (!marks.failure && checks_.done() && scene) {
-      char text[64];
-      std::snprintf(text, sizeof text, "no failure in %" PRIu64 " ticks", checks_.known());
-      (void)note(pal::kGood, text, "no failure", text, false);
+      // Failures listed that no mover has more of than another are not "no failure".
+      const std::string text = noFailureWords();
+      const bool none = checks_.failures().entries.empty();
+      (void)note(none ? pal::kGood : pal::kBad, text, none ? "no failure" : "fail alike", text, false);
     }
     if (!dropped.empty()) {
       ImGui::TextColored(colour(pal::kDim), "  (+%zu more)", dropped.size());

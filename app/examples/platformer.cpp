@@ -123,6 +123,17 @@ int main(int argc, char** argv) {
     }
   }
   tv::Recorder* rec = recorder ? &*recorder : nullptr;
+  if (live) {
+    // The stream connects on a thread of its own: give it its first try before the first frame
+    // (at most 2 s), so that a short game run beside a listening receiver is seen from frame 0
+    // even on a loaded machine. Nobody listening: it says so and the game plays on.
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    for (;;) {
+      const tv::LiveStatus s = recorder->liveStatus();
+      if (s.connected || !s.message.empty() || std::chrono::steady_clock::now() > until) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
   // -------------------------------------------------------------------------------------------
 
   game.build(rec);

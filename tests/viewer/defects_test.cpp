@@ -132,6 +132,42 @@ TEST_F(DebuggerDriver, HelpFollowsTheColumnsTabsWhenTheLayoutMoves) {
   EXPECT_FALSE(help.Overlaps(windowRect("Scene and mover")));
 }
 
+// What-if opened on the mover shown, and "Run beside it" ran discrete beside discrete: the
+// Failures tab listed each failure twice (1482) while the status bar said, in green, "no
+// failure in 2 ticks". A mover is shown once; movers that fail alike are not "no failure".
+TEST_F(DebuggerDriver, AMoverIsNotRunBesideItselfAndSharedFailuresAreNotNoFailure) {
+  open({"--scene", "bullets-wall", "--mover", "discrete", "--tick", "2", "--body", "2"});
+  dbg().compareWith({MoverSpec{.kind = MoverKind::discrete}});
+  EXPECT_FALSE(dbg().session().comparing());
+  EXPECT_NE(dbg().message().find("discrete is already shown"), std::string::npos) << dbg().message();
+  dbg().compareWith({MoverSpec{.kind = MoverKind::continuous}});  // the control: another mover
+  EXPECT_TRUE(dbg().session().comparing()) << dbg().message();
+  // Pieces longer than the whole move: substep-discrete teleports as discrete does, and both
+  // send the same 741 bullets through. Neither is worse; their failures are listed.
+  open({"--scene", "bullets-wall", "--compare", "discrete,substep-discrete", "--substep", "1000",
+        "--tick", "2"});
+  frames(5);
+  ASSERT_TRUE(dbg().checks().done());
+  ASSERT_FALSE(dbg().checks().firstFailure()) << "one mover did worse: the test shows nothing";
+  ASSERT_FALSE(dbg().checks().failures().entries.empty());
+  std::string all;
+  for (const std::string& s : dbg().status()) all += s + " | ";
+  EXPECT_EQ(all.find("no failure in"), std::string::npos) << all;
+  EXPECT_NE(all.find("failures are listed"), std::string::npos) << all;
+}
+
+// V in one panel showed nothing but flipped a hidden setting: the next what-if then opened
+// overlaid instead of beside. It says what it is for and changes nothing.
+TEST_F(DebuggerDriver, OverlaidIsOnlyForComparedMovers) {
+  open({"--scene", "bullets-wall", "--mover", "discrete", "--tick", "2"});
+  dbg().command(Command::overlay);
+  EXPECT_FALSE(dbg().view().overlaid);
+  EXPECT_NE(dbg().notice().find("compare first"), std::string::npos) << dbg().notice();
+  open({"--scene", "bullets-wall", "--compare", "discrete,continuous", "--tick", "2"});
+  dbg().command(Command::overlay);  // the control: compared, V overlays them
+  EXPECT_TRUE(dbg().view().overlaid);
+}
+
 // The scene picker cut its descriptions, and a recording's call lines were cut at the column's
 // edge; both wrap now.
 TEST_F(DebuggerDriver, PickerDescriptionsAndCallLinesAreWhole) {

@@ -182,6 +182,43 @@ TEST_F(DebuggerDriver, ARecordingListsTheGamesOwnTunnelsWithoutAWhatIf) {
   EXPECT_EQ(dbg().session().traced(), entries[0].failure.item);
 }
 
+// A game that moves its bullet by updates (x += v*dt, update), opened with a what-if that makes
+// updates moves, as tv-replay --what-if continuous --updates-as-moves reads it: the recorded
+// run's tunnel is listed and the bullet is drawn as a body. The debugger said "no failure" (it
+// judged the recorded run's moves only: there are none) and drew the bullet as scenery.
+//
+//     bullet ■ --32--> |wall|  (4 px thick, at x 40: the second update lands past it)
+TEST_F(DebuggerDriver, AGameThatMovesByUpdatesHasItsTunnelsListedUnderUpdatesAsMoves) {
+  const std::string path = ::testing::TempDir() + "tv_update_tunnel.tvrec";
+  ItemId bullet;
+  {
+    World w(16);
+    Recorder rec(path);
+    w.attach(rec);
+    const ItemId wall = w.add({40, 0, 4, 32});
+    rec.label(wall, "wall", "wall");
+    bullet = w.add({0, 10, 2, 2});
+    rec.label(bullet, "bullet 1", "bullet");
+    for (int f = 0; f < 4; ++f) {
+      w.update(bullet, w.rect(bullet).position() + Vec2{32, 0});
+      rec.frame();
+    }
+    w.detach();
+  }
+  open({path});  // the control: without the what-if, updates are not moves
+  EXPECT_TRUE(dbg().checks().failures().entries.empty());
+  open({path, "--what-if", "continuous", "--updates-as-moves"});
+  const auto& entries = dbg().checks().failures().entries;
+  const auto recorded = std::find_if(entries.begin(), entries.end(),
+                                     [](const auto& e) { return e.panel == 0; });
+  ASSERT_NE(recorded, entries.end()) << "the recorded run's tunnel is not listed";
+  EXPECT_EQ(recorded->failure.kind, ui::FailureKind::tunnelled);
+  EXPECT_EQ(recorded->failure.frame, 1u);
+  // Drawn as a body, not as the level's geometry.
+  ASSERT_NE(dbg().session().primary().replay(), nullptr);
+  EXPECT_TRUE(dbg().session().primary().replay()->moves(bullet));
+}
+
 // A failure's words wrap in the column; the row is as tall as they are, so the next row's
 // "frame 62 call 2" is not written over the last word of "... 32 from the recorded end".
 TEST_F(DebuggerDriver, AFailureRowIsAsTallAsItsWrappedWords) {

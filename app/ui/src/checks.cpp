@@ -95,8 +95,15 @@ void Checks::reset(Session& session, bool wait) {
   const ReplaySource* recorded = session.primary().replay();
   if (!recorded) return;
   // The recorded run's own failures come from validating it; each what-if panel's from its run.
+  // A what-if that makes updates moves judges the recorded run the same way, as tv-replay does.
+  bool updatesAsMoves = false;
+  for (std::size_t k = 1; k < session.size(); ++k) {
+    if (const ReplaySource* r = session.panel(k).replay()) {
+      updatesAsMoves = updatesAsMoves || r->recording().options().updatesAsMoves;
+    }
+  }
   validation_ = std::make_unique<ValidationJob>();
-  validation_->start(recorded->origin(), wait);
+  validation_->start(recorded->origin(), wait, updatesAsMoves);
   for (std::size_t k = 1; k < session.size(); ++k) {
     const ReplaySource* r = session.panel(k).replay();
     auto job = std::make_unique<WhatIfJob>();

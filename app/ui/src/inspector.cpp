@@ -196,9 +196,18 @@ void inspectorContents(const Source& s, const FailureList* failures, std::size_t
     // Say why: a body that has stopped makes no move, so there is nothing to trace; an item
     // not in the world (said above) makes none either.
     if (s.world().has(id) || body) {
-      ImGui::TextColored(colour(pal::kDim), "%s",
-                         body && !body->active ? "no move traced: the body has stopped"
-                                               : "no move of it traced yet");
+      // Bodies moved by a core function other than a mover's move keep no trace: say by what.
+      const char* why = body && !body->active ? "no move traced: the body has stopped"
+                        : body && body->solid
+                            ? "a moving solid (tv::moveSolid): its moves are not traced; the "
+                              "bodies it carried, pushed or squished are outlined"
+                        : body && body->maxNudge > 0.0
+                            ? "moved with corner correction (tv::moveCornered): its moves are "
+                              "not traced; each nudge is drawn (green)"
+                            : "no move of it traced yet";
+      ImGui::PushStyleColor(ImGuiCol_Text, colour(pal::kDim));
+      ImGui::TextWrapped("%s", why);
+      ImGui::PopStyleColor();
     }
     return;
   }

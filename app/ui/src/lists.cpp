@@ -148,13 +148,20 @@ void itemsContents(const Source& s, OutlinerState& st, Actions& a) {
       ImGui::TableNextColumn();
       ImGui::TextColored(colour(pal::kDim), "%s", i.category.c_str());
       ImGui::TableNextColumn();
-      if (i.moveCount > 0 || !i.moves) {
+      // A source that does not count a body's moves (a scene) does not count its hits either:
+      // both unknown, not 0.
+      const bool counted = i.moveCount > 0 || !i.moves;
+      if (counted) {
         ImGui::Text("%" PRIu64, i.moveCount);
       } else {
         ImGui::TextColored(colour(pal::kDim), "-");
       }
       ImGui::TableNextColumn();
-      ImGui::Text("%" PRIu64, i.hits);
+      if (counted) {
+        ImGui::Text("%" PRIu64, i.hits);
+      } else {
+        ImGui::TextColored(colour(pal::kDim), "-");
+      }
     }
   }
   ImGui::EndTable();

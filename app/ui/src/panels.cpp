@@ -262,11 +262,14 @@ void countersContents(const SimSource& source) {
     std::uint64_t value;
     bool always;
     bool failure;
+    const char* tip = nullptr;  // what the row means, on hover
   };
   const Row rows[] = {
       {"tunnelled so far", c.tunnelled, true, true},
       {"far-side push-outs", c.farPushOuts, false, true},
-      {"hits", c.hits, true, false},
+      {"target hits", c.hits, false, false,
+       "what the scene means to be hit and was (a bullet stopped by the wall, a crowd\n"
+       "mover meeting a solid); every collision is counted under collisions"},
       {"misses", c.misses, false, false},
       {"escapes", c.escapes, false, true},
       {"overlaps", c.overlaps, false, true},
@@ -287,6 +290,7 @@ void countersContents(const SimSource& source) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(r.name);
+      if (r.tip != nullptr && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.tip);
       ImGui::TableNextColumn();
       const bool bad = r.failure && r.value != 0;
       ImGui::TextColored(colour(bad ? pal::kBad : pal::kLabel), "%" PRIu64, r.value);

@@ -26,7 +26,7 @@ Replay openOrigin(const ReplaySource::Origin& origin, const ReplayOptions& optio
 
 }  // namespace
 
-void ValidationJob::start(const ReplaySource::Origin& origin, bool wait) {
+void ValidationJob::start(const ReplaySource::Origin& origin, bool wait, bool updatesAsMoves) {
   stop();
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -41,13 +41,13 @@ void ValidationJob::start(const ReplaySource::Origin& origin, bool wait) {
   done_ = false;
   running_ = true;
   if (wait) {
-    run(origin);
+    run(origin, updatesAsMoves);
   } else {
-    thread_ = std::thread([this, origin] { run(origin); });
+    thread_ = std::thread([this, origin, updatesAsMoves] { run(origin, updatesAsMoves); });
   }
 }
 
-void ValidationJob::run(const ReplaySource::Origin& origin) {
+void ValidationJob::run(const ReplaySource::Origin& origin, bool updatesAsMoves) {
   std::optional<tv::Divergence> d;
   std::vector<MoveDifference> failures;
   std::string error;
@@ -62,7 +62,15 @@ void ValidationJob::run(const ReplaySource::Origin& origin) {
     });
     cancelled = replay.cancelled();
     // Then the game's own moves, judged: what the Failures tab lists for the recorded run.
-    if (!cancelled && !cancel_.load()) failures = replay.checkRecorded().recordedFailures;
+    if (!cancelled && !cancel_.load()) {
+      if (updatesAsMoves) {
+        ReplayOptions judged = o;
+        judged.updatesAsMoves = true;
+        failures = openOrigin(origin, judged).checkRecorded().recordedFailures;
+      } else {
+        failures = replay.checkRecorded().recordedFailures;
+      }
+    }
     if (!cancelled) progress_ = replay.frames();
     // Then every call traced, as the debugger replays what it draws: a divergence there is one
     // the picture would show, and the status bar must say so too.

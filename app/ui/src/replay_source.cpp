@@ -36,7 +36,7 @@ ReplaySource::ReplaySource(Replay replay, std::string name, Origin origin, Sourc
   std::unordered_map<std::string, std::size_t> still;
   std::size_t stillCount = 0;
   for (const RecordedItem& i : items) {
-    if (i.moves > 0) continue;
+    if (i.moves > 0 || i.updates > 0) continue;
     ++stillCount;
     if (!i.category.empty()) ++still[i.category];
   }
@@ -161,7 +161,9 @@ std::optional<ItemId> ReplaySource::findLabel(std::string_view label) const {
 
 bool ReplaySource::moves(ItemId id) const {
   const auto at = recorded_.find(id);
-  return at != recorded_.end() && replay_.items()[at->second].moves > 0;
+  if (at == recorded_.end()) return false;
+  const RecordedItem& i = replay_.items()[at->second];
+  return i.moves > 0 || i.updates > 0;  // a body the game moves by updates moves too
 }
 
 WorldPicture ReplaySource::picture() {
@@ -173,7 +175,7 @@ WorldPicture ReplaySource::picture() {
     const bool isSelected = selected_ && *selected_ == id;
     const auto at = recorded_.find(id);
     const RecordedItem* item = at != recorded_.end() ? &replay_.items()[at->second] : nullptr;
-    const bool moving = item != nullptr && item->moves > 0;
+    const bool moving = item != nullptr && (item->moves > 0 || item->updates > 0);
     // An item that never moves is level geometry, unless the game said what it is: an enemy
     // that stands and shoots is drawn as a body, in its category's colour.
     const bool named = item != nullptr && !item->category.empty() && item->category != terrain_;
@@ -256,7 +258,7 @@ std::vector<ItemRow> ReplaySource::items() const {
     r.id = i.id;
     r.name = i.label;
     r.category = i.category;
-    r.moves = i.moves > 0;
+    r.moves = i.moves > 0 || i.updates > 0;
     r.moveCount = i.moves;
     r.hits = i.hits;
     r.firstFrame = i.firstFrame;

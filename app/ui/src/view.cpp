@@ -421,6 +421,11 @@ void panelStats(Session& s, std::size_t k, float w) {
     const auto b = sim ? sim->bodyOf(*id) : std::nullopt;
     if (b && !sim->simulation().bodies()[*b].active) {
       textFitting({"no move traced: the body has stopped", "stopped: no move"}, pal::kDim);
+    } else if (b && sim->simulation().bodies()[*b].solid) {
+      textFitting({"a moving solid: its moves are not traced", "not traced"}, pal::kDim);
+    } else if (b && sim->simulation().bodies()[*b].maxNudge > 0.0) {
+      textFitting({"moved with corner correction: not traced, nudges drawn", "not traced"},
+                  pal::kDim);
     } else if (!src.world().has(*id)) {
       // A recorded item removed (a bullet that hit), or not added yet.
       const std::string gone = src.describe(*id) + " is not in the world at this " + frameWord(src);

@@ -283,7 +283,10 @@ void Replay::Impl::tally(
       break;
     case CallRole::item: {
       const std::size_t k = itemFor(c.item, f);
-      if (c.kind == CallKind::update && !(c.rect == c.start)) markMoving(k);
+      if (c.kind == CallKind::update && !(c.rect == c.start)) {
+        markMoving(k);
+        ++items[k].updates;
+      }
       break;
     }
     case CallRole::sweep:

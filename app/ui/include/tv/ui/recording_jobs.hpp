@@ -28,7 +28,9 @@ class ValidationJob {
   /// Validates the recording from the start (stops any run before), as `tv-replay --validate
   /// --traced` does: call after call untraced, then — when that matched — every call traced and
   /// from each keyframe, as the debugger re-runs what it shows. `wait`: in this thread.
-  void start(const ReplaySource::Origin& origin, bool wait);
+  /// `updatesAsMoves`: the recorded run's failures count its position-only updates as moves,
+  /// as a what-if with --updates-as-moves judges it (tv-replay's "recorded run" column).
+  void start(const ReplaySource::Origin& origin, bool wait, bool updatesAsMoves = false);
   void stop();
 
   [[nodiscard]] bool running() const { return running_.load(); }
@@ -53,7 +55,7 @@ class ValidationJob {
   [[nodiscard]] std::string error() const;
 
  private:
-  void run(const ReplaySource::Origin& origin);
+  void run(const ReplaySource::Origin& origin, bool updatesAsMoves);
 
   std::thread thread_;
   std::atomic<bool> running_{false}, done_{false}, cancel_{false}, tracing_{false}, tracedOnly_{false};

@@ -54,6 +54,9 @@ struct RecordedItem {
   /// @{
   std::uint64_t moves = 0, hits = 0;  ///< counts over the whole recording
   /// @}
+  /// Updates that changed its rect: a game that moves its bodies itself (x += v*dt, update,
+  /// push out) moves them by updates, not moves.
+  std::uint64_t updates = 0;
   double maxSpeed = 0.0;  ///< longest single move, in world units
   std::uint64_t endedOverlapping = 0;  ///< moves that ended overlapping a solid (not ignored)
 };
