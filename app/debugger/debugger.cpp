@@ -12,6 +12,7 @@
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
 #include "tv/ui/still.hpp"
+#include "tv/ui/tick_progress.hpp"
 #include "tv/record/live.hpp"
 #include "tv/ui/live_source.hpp"
 
@@ -140,7 +141,11 @@ Debugger::Debugger(const ViewerOptions& options, const Settings* settings) {
     }
     if (o.body) select(session_->primary().sim()->simulation().bodies()[*o.body].item);
     try {
+      // A far tick runs before the window opens: how far it has got is said on stderr.
+      ui::TickProgress progress("tv-debugger", "--tick " + std::to_string(o.ticks.front()));
+      ui::TickProgress::attach(*session_, &progress);
       goTo(o.ticks.front(), true);
+      ui::TickProgress::attach(*session_, nullptr);
       if (currentTick() < o.ticks.front()) {
         throw ui::UsageError{"--tick " + std::to_string(o.ticks.front()) +
                              ": the scene ends at tick " + std::to_string(currentTick())};
@@ -185,6 +190,10 @@ void Debugger::setPinned(bool pinned) {
 }
 
 void Debugger::store(Settings& s) const {
+  // What belongs to the person, whatever is open: Help has been seen (it opened on every start
+  // of someone who only opens recordings), the playback rate.
+  s.setBool("help.seen", true);
+  s.setNumber("speed", speed_);
   if (!scene_) return;  // a recording leaves the scene settings as they were
   s.set("scene", scene_->name);
   std::string names;
@@ -195,9 +204,7 @@ void Debugger::store(Settings& s) const {
   s.set("movers", names);
   s.setBool("overlay", view_.overlaid);
   s.setBool("follow", follow_);
-  s.setNumber("speed", speed_);
   s.setNumber("render-hz", view_.panels[0].renderHz);
-  s.setBool("help.seen", true);
   s.set("params.scene", scene_->name);
   for (std::size_t i = 0; i < params_.specs().size(); ++i)
     s.setNumber("param." + params_.specs()[i].name, params_.values()[i]);
@@ -295,6 +302,11 @@ void Debugger::loadScene(const sim::SceneDef& scene) {
 }
 
 void Debugger::openFile(const std::string& path) {
+  // A recording typed into the level picker (or dropped) opens as what it is.
+  if (path.ends_with(".tvrec")) {
+    tryOpenRecording(path);
+    return;
+  }
   const app::SceneSource file = app::SceneSource::forFile(path);
   try {
     const sim::SceneDef& scene = file.scene();  // throws naming the file, JSON path and value
@@ -646,6 +658,11 @@ void Debugger::frameAll() {
 void Debugger::reportError(const std::string& what) {
   message_ = what;
   if (!view_.panels.empty()) view_.panels[0].error = what;
+}
+
+void Debugger::clearError() {
+  if (!view_.panels.empty() && view_.panels[0].error == message_) view_.panels[0].error.clear();
+  message_.clear();
 }
 
 // -- tuning --------------------------------------------------------------------------------------

@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gl_window.hpp"
@@ -43,9 +44,12 @@ class OpenRecordingDialog {
  public:
   void open() { open_ = true; }
   [[nodiscard]] std::optional<std::string> draw();
+  /// The path was changed since the last call (an error about the old one no longer applies).
+  [[nodiscard]] bool takeEdited() { return std::exchange(edited_, false); }
 
  private:
   bool open_ = false;
+  bool edited_ = false;
   std::string path_;
 };
 
@@ -83,7 +87,7 @@ class Debugger {
   /// (nothing changes). `tryOpenRecording` shows the error instead (a dropped file).
   void openRecording(const std::string& path);
   void tryOpenRecording(const std::string& path);
-  /// Opens a Tiled map or a scene file (File > Open file..., or dropped on the window); a bad
+  /// Opens a Tiled map or a scene file (File > Open level file..., Ctrl+O, or dropped on the window); a bad
   /// file is reported in the window and changes nothing.
   void openFile(const std::string& path);
   /// The same source re-run by `movers` beside it (a scene's comparison, a recording's what-if
@@ -164,6 +168,8 @@ class Debugger {
   void frameAll();
   void traceBusiest();
   void reportError(const std::string& what);
+  /// Takes back what reportError said (the person changed what it was about).
+  void clearError();
   /// A live game: what arrived, and the newest frame while following.
   void refreshLive();
   [[nodiscard]] ui::LiveSource* liveSource();
@@ -206,7 +212,7 @@ class Debugger {
   bool showSweep_ = false;
   bool showWhatIf_ = false;
   bool openPicker_ = false;
-  bool focusPath_ = false;  // File > Open file...: the picker opens with its path field focused
+  bool focusPath_ = false;  // File > Open level file...: the picker opens with its path field focused
   bool quit_ = false;
   bool pinned_ = false;
   bool waited_ = false;     // the last frame waited for input (its time is not a frame's cost)

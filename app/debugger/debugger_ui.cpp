@@ -113,7 +113,9 @@ void Debugger::frame(double seconds, std::span<const KeyPress> keys) {
   if (showWhatIf_) drawWhatIfDialog();
   drawLiveDialogs();
   drawPicker();
-  if (const auto path = recordingDialog_.draw()) tryOpenRecording(*path);
+  const std::optional<std::string> recording = recordingDialog_.draw();
+  if (recordingDialog_.takeEdited()) clearError();  // before the open, whose error stays
+  if (recording) tryOpenRecording(*recording);
 }
 
 void Debugger::syncCameras() {
@@ -713,8 +715,11 @@ void Debugger::drawPicker() {
     ImGui::SetKeyboardFocusHere();
     focusPath_ = false;
   }
-  const bool openPath = ImGui::InputTextWithHint("##path", "levels/meadow.tmj", path, sizeof path,
-                                                 ImGuiInputTextFlags_EnterReturnsTrue);
+  // As in Open recording: the last path, selected, is replaced by what is typed.
+  const bool openPath = ImGui::InputTextWithHint(
+      "##path", "levels/meadow.tmj", path, sizeof path,
+      ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  if (ImGui::IsItemEdited()) clearError();  // the error was about the path being changed
   pickerPath_ = path;
   ImGui::SameLine();
   const bool openClicked = ImGui::Button("Open file");
@@ -842,8 +847,10 @@ void Debugger::drawLiveDialogs() {
     char buffer[512];
     std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
     ImGui::SetNextItemWidth(-90.0f);
-    const bool enter = ImGui::InputTextWithHint("##text", hint, buffer, sizeof buffer,
-                                                ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter = ImGui::InputTextWithHint(
+        "##text", hint, buffer, sizeof buffer,
+        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    if (ImGui::IsItemEdited()) clearError();
     text = buffer;
     ImGui::SameLine();
     const bool go = (ImGui::Button(action) || enter) && !text.empty();
@@ -879,8 +886,12 @@ std::optional<std::string> OpenRecordingDialog::draw() {
   char buffer[1024];
   std::snprintf(buffer, sizeof buffer, "%s", path_.c_str());
   ImGui::SetNextItemWidth(-80.0f);
-  const bool enter = ImGui::InputTextWithHint("##path", "path/to/game.tvrec", buffer, sizeof buffer,
-                                              ImGuiInputTextFlags_EnterReturnsTrue);
+  // The path last tried is there, selected: what is typed replaces it (it was appended to, so a
+  // path typed after a failed "/tmp" became "/tmp/tmp/...").
+  const bool enter = ImGui::InputTextWithHint(
+      "##path", "path/to/game.tvrec", buffer, sizeof buffer,
+      ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  if (ImGui::IsItemEdited()) edited_ = true;
   path_ = buffer;
   ImGui::SameLine();
   if ((ImGui::Button("Open") || enter) && !path_.empty()) chosen = path_;

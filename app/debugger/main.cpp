@@ -66,7 +66,7 @@ int screenshot(const ViewerOptions& o) {
   const ui::PictureOptions& p = o.picture;
   // A scene's still, or a recording's (tv-render --open).
   ui::Still still(p, o.recording);
-  still.advanceTo(p.ticks.front());
+  still.advanceTo(p.ticks.front(), "tv-debugger");
   GlWindow window({p.width, p.height, "Tunnelvision", true});
   checkSize(window, p.width, p.height);
   ImGui::GetIO().DisplaySize = {static_cast<float>(p.width), static_cast<float>(p.height)};
@@ -198,6 +198,11 @@ int main(int argc, char** argv) {
   } catch (const tv::ui::NoFailure& e) {
     std::cerr << "tv-debugger: " << e.message << ": nothing to show, no image written\n";
     return 0;
+  } catch (const tv::Error& e) {
+    // A file (map, scene file, recording) that cannot be read or used: the input, as in
+    // tv-replay, tv-render and tv-run.
+    std::cerr << "tv-debugger: " << tv::app::userMessage(e) << "\n";
+    return tv::viewer::kUsageExit;
   } catch (const std::exception& e) {
     std::cerr << "tv-debugger: " << tv::app::userMessage(e) << "\n";
     return tv::viewer::kFailureExit;

@@ -36,7 +36,8 @@ const char* const kUsage =
     "  --scene-file F   a scene file (JSON; tv-run --export-scene writes one) instead of --scene\n"
     "  --mover NAME     the mover (default continuous)\n"
     "  --compare A,B,.. several movers in lockstep, side by side (--overlay: in one view)\n"
-    "  --tick N         the tick to open at (default 1)\n"
+    "  --tick N         the tick to open at (default 1; at most 1000000, and no later than a\n"
+    "                   scene's end); a run of over a second says on stderr how far it has got\n"
     "  --window WxH     window size in pixels (default 1280x720; --size is the bodies' size)\n"
     "  --body I         the body whose moves are traced and inspected (default 0; none)\n"
     "  --view V         scene: frame everything; follow: the traced move; X,Y,W,H: this rect\n"
@@ -79,8 +80,8 @@ const char* const kUsage =
     "Settings (scene, movers, layout, overlays, window size, playback rate, tuned parameter\n"
     "values) live in\n"
     "$XDG_CONFIG_HOME/tunnelvision/debugger.txt (or ~/.config/tunnelvision/debugger.txt).\n"
-    "Exit status: 0 done, 1 failed (no display, GL, a file that does not open), 2 bad command\n"
-    "line.\n";
+    "Exit status: 0 done, 1 failed (no display, GL, a picture not written), 2 bad command line\n"
+    "or a file that cannot be read or used (a map, a scene file, a recording).\n";
 
 namespace {
 

@@ -188,6 +188,11 @@ int main(int argc, char** argv) {
     // Nothing failed, so there is no moment to draw: said, and not an error.
     std::cerr << "tv-render: " << e.message << ": nothing to show, no image written\n";
     return 0;
+  } catch (const tv::Error& e) {
+    // A file (map, scene file, recording) that cannot be read or used: the input, not the
+    // rendering, as in tv-replay, tv-debugger and tv-run.
+    std::cerr << "tv-render: " << tv::app::userMessage(e) << "\n";
+    return tv::headless::kUsageExit;
   } catch (const std::exception& e) {
     std::cerr << "tv-render: " << tv::app::userMessage(e) << "\n";
     return tv::headless::kFailureExit;

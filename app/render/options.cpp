@@ -21,7 +21,9 @@ const char* const kUsage =
     "  --scene-file F   a scene file (JSON; tv-run --export-scene writes one) instead of --scene\n"
     "  --mover NAME     the mover (default continuous)\n"
     "  --compare A,B,.. the same scene and tick for several movers side by side\n"
-    "  --tick N         the tick to show (default 1); --ticks a,b,c writes one image per tick\n"
+    "  --tick N         the tick to show (default 1; at most 1000000, and no later than a scene's\n"
+    "                   end; a run of over a second says on stderr how far it has got);\n"
+    "                   --ticks a,b,c writes one image per tick\n"
     "  --window WxH     image size in pixels (default 1280x720)\n"
     "  --out FILE       output PNG; {tick} is replaced by the tick. Default:\n"
     "                   <scene>_<mover>_<tick>.png, or <scene>_<A>-vs-<B>_<tick>.png with "
@@ -60,6 +62,7 @@ const char* const kUsage =
     "                   with --first-failure: the first re-run move that tunnelled or ended\n"
     "                   inside a solid\n"
     "  --updates-as-moves  with --what-if: re-run each position-only update as a move too\n"
-    "Exit status: 0 done, 1 rendering failed, 2 bad command line.\n";
+    "Exit status: 0 done, 1 rendering failed, 2 bad command line or a file that cannot be read or\n"
+    "used (a map, a scene file, a recording).\n";
 
 }  // namespace tv::headless

@@ -110,7 +110,7 @@ constexpr const char* kUsage =
     "  --frames N          with --listen: stop after N frames (default: when the game leaves)\n"
     "  --wait S            with --listen: give up if no game connects within S seconds\n"
     "Exit status: 0 ok, 1 a divergence, a recording cut short or a --fail-on condition, 2 bad "
-    "command line or unreadable file.\n";
+    "command line or a file that cannot be read or is not a recording.\n";
 
 Options parse(int argc, char** argv) {
   Options o;
@@ -441,7 +441,9 @@ int main(int argc, char** argv) {
     if (o.stats) return stats(r);
     if (o.mover) return whatIf(r, o);
     return summary(r);
-  } catch (const tv::Error& e) {
+  } catch (const std::exception& e) {
+    // tv::Error for a file that cannot be read or is not a recording; anything else (memory)
+    // is said in words too, never left to abort the program.
     std::cerr << "tv-replay: " << tv::app::userMessage(e) << "\n";
     return 2;
   }

@@ -6,8 +6,9 @@
 //   tv-run --map level.tmj | --scene-file s.json [...]   the same for a level from a file
 //   tv-run --export-scene NAME FILE [--PARAM VALUE ...]  a built-in scene as a scene file
 //
-// Bad flags, unknown names and bad values print a message naming the flag and the value on
-// stderr and exit with code 2.
+// Bad flags, unknown names, bad values and files that cannot be read print a message naming the
+// flag, the value or the file on stderr and exit with code 2 (as tv-render, tv-debugger and
+// tv-replay do).
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -61,7 +62,8 @@ const char* const kUsage =
     "  tv-run --map FILE | --scene-file FILE [...]   the same for a level from a file:\n"
     "%s"
     "  tv-run --export-scene NAME FILE [--mover M] [--PARAM VALUE ...]\n"
-    "      writes built-in scene NAME (with those parameters) as a scene file that runs the same\n";
+    "      writes built-in scene NAME (with those parameters) as a scene file that runs the same\n"
+    "Exit status: 0 done, 1 failed, 2 bad command line or a file that cannot be read or used.\n";
 
 struct Options {
   bool list = false;
@@ -402,6 +404,10 @@ int main(int argc, char** argv) {
     return run(o);
   } catch (const UsageError& e) {
     std::cerr << "tv-run: " << e.message << "\n" << usage();
+    return kUsageError;
+  } catch (const tv::Error& e) {
+    // A file that cannot be read or a value refused: the input, as for a bad flag.
+    std::cerr << "tv-run: " << tv::app::userMessage(e) << "\n";
     return kUsageError;
   } catch (const std::exception& e) {
     std::cerr << "tv-run: " << tv::app::userMessage(e) << "\n";

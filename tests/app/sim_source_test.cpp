@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "tv/app/scene_source.hpp"
 #include "tv/error.hpp"
@@ -34,6 +36,25 @@ TEST(SimSource, KeepsTheTracedBodysLastMovesOldestFirst) {
   EXPECT_EQ(s.history()[0].tick, 8u);
   EXPECT_EQ(s.history()[2].tick, 10u);
   EXPECT_EQ(s.history()[2].trace.item, s.simulation().bodies()[0].item);
+}
+
+// A far --tick (lift-crush never ends: tick 999999 ran for minutes without a word) is run with
+// its progress told every 4096 ticks, to what the tools print (TickProgress); without a
+// listener nothing is told, and the run is the same.
+TEST(SimSource, ALongRunToATickTellsHowFarItHasGot) {
+  const sim::SceneDef& scene = sim::findScene("lift-crush");
+  SimSource told(scene, scene.defaults(), kDiscrete);
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> calls;
+  told.setProgress([&](std::uint64_t r, std::uint64_t t) { calls.emplace_back(r, t); });
+  told.advanceTo(10000, 0.0, true);
+  ASSERT_EQ(told.frame(), 10000u) << "lift-crush does not end";
+  ASSERT_EQ(calls.size(), 2u);
+  EXPECT_EQ(calls[0], (std::pair<std::uint64_t, std::uint64_t>{4096, 10000}));
+  EXPECT_EQ(calls[1], (std::pair<std::uint64_t, std::uint64_t>{8192, 10000}));
+  // The control: with the listener taken away, nothing is told.
+  told.setProgress({});
+  told.advanceTo(12289, 0.0, true);  // past 12288
+  EXPECT_EQ(calls.size(), 2u);
 }
 
 TEST(SimSource, NoBodyMeansNoTrace) {

@@ -121,3 +121,51 @@ TEST(MarkdownLinks, EveryRelativeLinkInTheRepositoryLeadsSomewhere) {
     for (const std::string& problem : tv::docs::brokenLinks(f))
       ADD_FAILURE() << fs::relative(f, kRoot).string() << ": " << problem;
 }
+
+namespace {
+
+// The labels of tv-debugger's File menu, read from its source: every string between
+// BeginMenu("File") and the menu's EndMenu(), without a trailing "...".
+std::vector<std::string> fileMenuLabels() {
+  const std::string ui = readFile(kRoot / "app/debugger/debugger_ui.cpp");
+  const std::size_t begin = ui.find("BeginMenu(\"File\")");
+  const std::size_t end = ui.find("EndMenu()", begin);
+  std::vector<std::string> labels;
+  if (begin == std::string::npos || end == std::string::npos) return labels;
+  for (std::size_t q = ui.find('"', begin + 18); q < end; q = ui.find('"', q + 1)) {
+    const std::size_t close = ui.find('"', q + 1);
+    std::string label = ui.substr(q + 1, close - q - 1);
+    if (label.size() > 3 && label.ends_with("...")) label.resize(label.size() - 3);
+    if (!label.empty()) labels.push_back(label);
+    q = close;
+  }
+  return labels;
+}
+
+}  // namespace
+
+// The documents name the File menu's items as the menu does: the README sent people to
+// "File > Open file...", which the menu did not have.
+TEST(Menus, EveryFileMenuItemTheDocumentsNameIsInTheMenu) {
+  const std::vector<std::string> labels = fileMenuLabels();
+  ASSERT_GE(labels.size(), 4u) << "the File menu was not found in app/debugger/debugger_ui.cpp";
+  ASSERT_NE(std::find(labels.begin(), labels.end(), "Open recording"), labels.end());
+  // The control: the label the README used is not one of them.
+  EXPECT_EQ(std::find(labels.begin(), labels.end(), "Open file"), labels.end());
+  int named = 0;
+  for (const fs::path& f : markdownFiles()) {
+    if (f.filename() == "CHANGELOG.md") continue;  // the history names menus as they were
+    const std::string text = readFile(f);
+    for (std::size_t at = text.find("File > "); at != std::string::npos;
+         at = text.find("File > ", at + 1)) {
+      const std::string said = text.substr(at + 7, 80);
+      const bool found = std::any_of(labels.begin(), labels.end(), [&](const std::string& l) {
+        return said.rfind(l, 0) == 0;
+      });
+      ++named;
+      EXPECT_TRUE(found) << fs::relative(f, kRoot).string() << ": 'File > "
+                         << said.substr(0, said.find('\n')) << "' is not in the File menu";
+    }
+  }
+  EXPECT_GE(named, 3);
+}

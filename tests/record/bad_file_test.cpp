@@ -5,8 +5,12 @@
 #include <zlib.h>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <bit>
+#include <filesystem>
+#include <fstream>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -376,6 +380,57 @@ TEST(BadFile, AMissingFileIsNamed) {
   } catch (const tv::Error& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/recording.tvrec"), std::string::npos);
   }
+}
+
+// A folder or a pipe given where a recording goes: named and refused, never read by a size it
+// does not have. Negative control: the naive read (open, seek to the end, allocate tellg()
+// bytes) asks a directory for its size and gets 2^63 - 1, which threw std::bad_alloc.
+std::string openError(const std::string& path) {
+  try {
+    (void)tv::Replay::open(path);
+  } catch (const tv::Error& e) {
+    return e.what();
+  }
+  return "(opened)";
+}
+
+std::filesystem::path scratch(const char* name) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("tv-bad-file-" + std::to_string(::getpid()) + "-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(BadFile, ADirectoryIsRefusedNamingItNotReadByItsSize) {
+  const auto dir = scratch("dir");
+  const auto named = dir / "adir.tvrec";  // a folder with a recording's name
+  std::filesystem::create_directory(named);
+  for (const std::string& path : {dir.string(), named.string()}) {
+    const std::string e = openError(path);
+    EXPECT_NE(e.find("cannot open '" + path + "': is a directory, not a recording"),
+              std::string::npos)
+        << e;
+  }
+  // The naive way: a directory opens as a stream and reports an impossible size.
+  std::ifstream naive(named, std::ios::binary | std::ios::ate);
+  if (naive) {
+    EXPECT_TRUE(naive.tellg() < 0 || naive.tellg() > std::streamoff{1} << 40)
+        << "a directory's size was " << naive.tellg();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BadFile, APipeIsRefusedNamingItRatherThanWaitedOn) {
+  const auto dir = scratch("fifo");
+  const std::string fifo = (dir / "game.tvrec").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Nobody writes to it: an open for reading would block for ever.
+  const std::string e = openError(fifo);
+  EXPECT_NE(e.find("cannot open '" + fifo + "': a pipe (FIFO), not a recording file"),
+            std::string::npos)
+      << e;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -28,6 +28,10 @@ bool SceneSource::take(std::string_view flag, std::string_view value, std::strin
             "); give one --map or one --scene-file";
   } else if (value.empty()) {
     error = "--" + std::string(flag) + ": needs a file name";
+  } else if (value.ends_with(".tvrec")) {
+    error = "--" + std::string(flag) + ": '" + std::string(value) + "' is a recording, not a " +
+            (flag == "map" ? "map" : "scene file") +
+            " (tv-replay, tv-debugger and tv-render --open read recordings)";
   }
   (flag == "map" ? map_ : sceneFile_) = std::string(value);
   slot_ = std::make_shared<Slot>();

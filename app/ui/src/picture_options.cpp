@@ -118,6 +118,10 @@ PictureOptions parsePictureOptions(int argc, char** argv) {
       continue;
     }
     if (arg.size() < 3 || arg.substr(0, 2) != "--") {
+      if (arg.ends_with(".tvrec")) {
+        throw UsageError{"unexpected argument '" + std::string(arg) +
+                         "': open a recording with --open " + std::string(arg)};
+      }
       throw UsageError{"unexpected argument '" + std::string(arg) + "' (flags start with --)"};
     }
     std::string name(arg.substr(2));

@@ -178,13 +178,20 @@ void SimSource::advanceTo(std::uint64_t t, double renderHz, bool stopAtEnd) {
   }
   // With stopAtEnd, a scene that has ended goes no further: nothing happens after its end.
   const auto more = [&] { return sim_.ticks() < t && !(stopAtEnd && sim_.finished()); };
+  const auto report = [&] {
+    if (progress_ && (sim_.ticks() & 4095) == 0) progress_(sim_.ticks(), t);
+  };
   if (renderHz <= 0.0) {
-    while (more()) tick();
+    while (more()) {
+      tick();
+      report();
+    }
     return;
   }
   const double frameTime = 1.0 / renderHz;
   while (more()) {
     frame(frameTime);
+    report();
     if (sim_.ticks() > t) {
       fail(kWhere, "a render rate of " + formatNumber(renderHz) +
                        " Hz runs several ticks per frame and stepped over tick " +

@@ -15,6 +15,7 @@
 #include "tv/ui/checks.hpp"
 #include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
+#include "tv/ui/tick_progress.hpp"
 
 namespace tv::ui {
 
@@ -39,6 +40,15 @@ std::optional<RecordingFlags> extractRecordingFlags(int argc, char** argv, bool 
   };
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
+    // A recording given to --map or --scene-file: the file is right, the flag is not (it read as
+    // the recording, leaving "--map needs a value").
+    if ((arg == "--map" || arg == "--scene-file") && i + 1 < argc &&
+        std::string_view(argv[i + 1]).substr(0, 1) != "-" && endsWith(argv[i + 1], ".tvrec")) {
+      const std::string file = argv[i + 1];
+      throw UsageError{std::string(arg) + ": '" + file + "' is a recording, not a " +
+                       (arg == "--map" ? "map" : "scene file") + ": open it with " +
+                       (positional ? "`tv-debugger " + file + "`" : "--open " + file)};
+    }
     if (arg == "--open") {
       if (named) throw UsageError{"--open: one recording at a time"};
       r.path = value(i, arg);
@@ -265,8 +275,14 @@ void Still::findFailures() {
 
 Still::~Still() = default;
 
-void Still::advanceTo(std::uint64_t tick) {
+void Still::advanceTo(std::uint64_t tick, const char* tool) {
   if (recorded_ || shown_) return;
+  TickProgress progress(tool, "--tick " + std::to_string(tick));
+  TickProgress::attach(*session_, &progress);
+  struct Detach {
+    Session& s;
+    ~Detach() { TickProgress::attach(s, nullptr); }
+  } detach{*session_};
   try {
     // First as far as the scene goes: a tick after every mover's end is refused, not run for
     // ever; a mover that ended early then runs on to the tick the others reach.

@@ -11,7 +11,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <new>
+#include <stdexcept>
+#include <system_error>
 #include <unordered_map>
 
 #include "format.hpp"
@@ -314,9 +318,28 @@ Replay& Replay::operator=(Replay&&) noexcept = default;
 Replay::~Replay() = default;
 
 Replay Replay::open(const std::string& path, ReplayOptions options) {
+  namespace fs = std::filesystem;
+  const auto refuse = [&path](const std::string& why) {
+    fail("tv::Replay", "cannot open '" + path + "': " + why);
+  };
+  // The file is read whole, by the size the file system gives. A directory opens as a stream
+  // on Linux and reports a size of 2^63 - 1 (an allocation that throws bad_alloc), and a pipe or
+  // a device has no size at all: only a regular file is read.
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  // (A path that cannot be looked at is left to the open below, which names the system's reason.)
+  if (!ec && st.type() == fs::file_type::directory) refuse("is a directory, not a recording");
+  if (!ec && st.type() != fs::file_type::regular) {
+    const char* kind = st.type() == fs::file_type::fifo        ? "a pipe (FIFO)"
+                       : st.type() == fs::file_type::character ? "a character device"
+                       : st.type() == fs::file_type::block     ? "a block device"
+                       : st.type() == fs::file_type::socket    ? "a socket"
+                                                               : "a special file";
+    refuse(std::string(kind) + ", not a recording file (save the stream to a file first)");
+  }
   errno = 0;
   std::ifstream f(path, std::ios::binary | std::ios::ate);
-  // The system's reason (no such file, permission denied, a directory) is what the user fixes.
+  // The system's reason (no such file, permission denied) is what the user fixes.
   if (!f) {
     const int why = errno;
     fail("tv::Replay", "cannot open '" + path + "'" + (why ? std::string(": ") + std::strerror(why)
@@ -329,7 +352,14 @@ Replay Replay::open(const std::string& path, ReplayOptions options) {
   };
   const std::streamoff n = f.tellg();
   if (n < 0) cannotRead();
-  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(n));
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes.resize(static_cast<std::size_t>(n));
+  } catch (const std::bad_alloc&) {
+    refuse(std::to_string(n) + " bytes, more than this machine can hold in memory");
+  } catch (const std::length_error&) {
+    refuse(std::to_string(n) + " bytes, more than this machine can hold in memory");
+  }
   f.seekg(0);
   errno = 0;
   if (n > 0 && !f.read(reinterpret_cast<char*>(bytes.data()), n)) cannotRead();

@@ -122,4 +122,16 @@ describe('recording', function()
       os.remove(path)
     end
   end)
+
+  it('validateRecording and recordingItems refuse a folder, naming it (not "std::bad_alloc")', function()
+    local dir = os.tmpname()
+    os.remove(dir)
+    assert(os.execute('mkdir "' .. dir .. '"'))
+    for _, f in ipairs({ tv.validateRecording, tv.recordingItems }) do
+      local ok, err = pcall(f, dir)
+      assert.is_false(ok)
+      assert.is_truthy(err:find("cannot open '" .. dir .. "': is a directory, not a recording", 1, true), err)
+    end
+    os.remove(dir)
+  end)
 end)

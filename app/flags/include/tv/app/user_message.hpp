@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <exception>
+#include <new>
 #include <string>
 #include <string_view>
 
@@ -26,7 +27,10 @@ namespace tv::app {
   return std::string(message.substr(colon + 2));
 }
 
+/// The same for any exception; an allocation that failed reads "out of memory", not
+/// "std::bad_alloc".
 [[nodiscard]] inline std::string userMessage(const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e)) return "out of memory";
   return userMessage(std::string_view(e.what()));
 }
 

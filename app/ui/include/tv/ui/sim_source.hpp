@@ -10,6 +10,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <utility>
 #include <optional>
 #include <span>
 #include <string>
@@ -87,6 +89,11 @@ class SimSource final : public Source {
   /// the current tick, or when frames at `renderHz` step over it. With `stopAtEnd` it stops
   /// early at the end of a scene that ends before `t`.
   void advanceTo(std::uint64_t t, double renderHz, bool stopAtEnd = false);
+  /// Called every 4096 ticks of advanceTo with the tick reached and the one asked for (the
+  /// tools say how far a long run has got: TickProgress); empty, nothing is called.
+  void setProgress(std::function<void(std::uint64_t reached, std::uint64_t target)> f) {
+    progress_ = std::move(f);
+  }
   /// Back to tick 0 with new parameters and mover (nothing changes on a throw).
   void restart(const sim::Params& params, MoverSpec mover);
 
@@ -126,6 +133,7 @@ class SimSource final : public Source {
   bool interpolating_ = false;
   double renderHz_ = 0.0;
   std::optional<std::uint64_t> firstFailure_;
+  std::function<void(std::uint64_t, std::uint64_t)> progress_;
   std::uint64_t furthest_ = 0;
   std::optional<std::uint32_t> call_;
   bool callTraced_ = false;

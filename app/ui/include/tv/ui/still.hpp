@@ -87,7 +87,9 @@ class Still {
 
   /// Every panel runs to `tick` (at `o.renderHz`); UsageError when it cannot. A recording's
   /// frame is chosen by its flags, a first failure's by the failure: then this does nothing.
-  void advanceTo(std::uint64_t tick);
+  /// A run that takes over a second says how far it has got on stderr, each line starting
+  /// with `tool`.
+  void advanceTo(std::uint64_t tick, const char* tool = "tv-render");
   /// Fresh per-image state (camera, overlays, title) for the current tick: call once per
   /// image, before its frames.
   void beginImage();
