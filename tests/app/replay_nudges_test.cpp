@@ -11,6 +11,7 @@
 #include "tv/record/replay.hpp"
 #include "tv/ui/camera.hpp"
 #include "tv/ui/overlays.hpp"
+#include "tv/ui/panels.hpp"
 #include "tv/ui/palette.hpp"
 #include "tv/ui/replay_source.hpp"
 
@@ -119,6 +120,13 @@ TEST_F(ReplayNudges, NegativeControlTheSameJumpWithoutCorrectionDrawsNoNudge) {
   s.goTo(1);
   EXPECT_TRUE(s.picture().nudges.empty());
   EXPECT_FALSE(coloursIn(s.picture()).count(palette::kNudge));
+  EXPECT_FALSE(legendScopeOf(s).has & palette::kWithCornerNudge);
+}
+
+TEST_F(ReplayNudges, TheLegendNamesTheNudgeColourOfARecordingThatHasNudges) {
+  const Jump j = recordJump(4);
+  ReplaySource s(Replay::fromBytes(j.bytes), "jump");
+  EXPECT_TRUE(legendScopeOf(s).has & palette::kWithCornerNudge);
 }
 
 }  // namespace

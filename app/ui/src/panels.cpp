@@ -10,6 +10,7 @@
 
 #include "tv/app/user_message.hpp"
 #include "tv/error.hpp"
+#include "tv/ui/replay_source.hpp"
 #include "tv/ui/sim_source.hpp"
 #include "tv/ui/palette.hpp"
 
@@ -384,6 +385,12 @@ palette::LegendScope legendScopeOf(const Source& source) {
     }
   }
   if (source.hasContacts()) scope.has |= pal::kWithContacts;
+  // A recording (or a live game) whose game corrected a corner: its nudges are drawn, so named.
+  if (const ReplaySource* r = source.replay()) {
+    for (const RecordedItem& i : r->recording().items()) {
+      if (i.nudges > 0) scope.has |= pal::kWithCornerNudge;
+    }
+  }
   return scope;
 }
 
