@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "imgui.h"
+#include "imgui_frame.hpp"
 #include "tv/record/recorder.hpp"
 #include "tv/record/replay.hpp"
 #include "tv/sim/simulation.hpp"
@@ -22,32 +23,11 @@
 namespace tv::ui {
 namespace {
 
-class ContactEvents : public ::testing::Test {
+class ContactEvents : public testing::ImGuiFrame {
  protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = {1280, 720};
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    ImGui::NewFrame();
-  }
-  void TearDown() override {
-    ImGui::EndFrame();
-    ImGui::DestroyContext();
-  }
 
   static std::set<ImU32> coloursIn(const Camera& cam, const WorldPicture& pic) {
-    ImDrawList dl(ImGui::GetDrawListSharedData());
-    dl._ResetForNewFrame();
-    dl.PushClipRectFullScreen();
-    dl.PushTextureID(ImGui::GetIO().Fonts->TexID);
-    drawWorld(dl, cam, pic, Overlays{});
-    std::set<ImU32> out;
-    for (const ImDrawVert& v : dl.VtxBuffer) out.insert(v.col);
-    return out;
+    return testing::coloursDrawn(cam, pic);
   }
 };
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "imgui.h"
+#include "imgui_frame.hpp"
 #include "tv/sim/scene.hpp"
 #include "tv/ui/overlays.hpp"
 #include "tv/ui/palette.hpp"
@@ -21,24 +22,9 @@
 namespace tv::ui {
 namespace {
 
-// An ImGui context with a built font atlas, for the length of a test.
-class ImGuiFixture : public ::testing::Test {
+// An ImGui frame, and what drawing a picture adds to a draw list.
+class ImGuiFixture : public testing::ImGuiFrame {
  protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = {1280, 720};
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    ImGui::NewFrame();  // sets the current font that labels are measured and drawn with
-  }
-  void TearDown() override {
-    ImGui::EndFrame();
-    ImGui::DestroyContext();
-  }
 
   // Vertices that drawing the picture adds to a fresh draw list.
   static int verticesFor(const Camera& cam, const WorldPicture& pic, const Overlays& on) {
@@ -53,14 +39,7 @@ class ImGuiFixture : public ::testing::Test {
 
 // Every vertex colour a picture's drawing uses.
 std::set<ImU32> coloursIn(const Camera& cam, const WorldPicture& pic) {
-  ImDrawList dl(ImGui::GetDrawListSharedData());
-  dl._ResetForNewFrame();
-  dl.PushClipRectFullScreen();
-  dl.PushTextureID(ImGui::GetIO().Fonts->TexID);
-  drawWorld(dl, cam, pic, Overlays{});
-  std::set<ImU32> out;
-  for (const ImDrawVert& v : dl.VtxBuffer) out.insert(v.col);
-  return out;
+  return testing::coloursDrawn(cam, pic);
 }
 
 std::unique_ptr<SimSource> sceneAt(std::string_view name, std::uint64_t tick) {

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "imgui.h"
+#include "imgui_frame.hpp"
 #include "tv/corner.hpp"
 #include "tv/record/recorder.hpp"
 #include "tv/record/replay.hpp"
@@ -51,34 +52,10 @@ Jump recordJump(double maxNudge) {
 std::set<ImU32> coloursIn(const WorldPicture& pic) {
   Camera cam;
   cam.frame({0, -8, 64, 64}, {0, 0}, {1280, 720});
-  ImDrawList dl(ImGui::GetDrawListSharedData());
-  dl._ResetForNewFrame();
-  dl.PushClipRectFullScreen();
-  dl.PushTextureID(ImGui::GetIO().Fonts->TexID);
-  drawWorld(dl, cam, pic, Overlays{});
-  std::set<ImU32> out;
-  for (const ImDrawVert& v : dl.VtxBuffer) out.insert(v.col);
-  return out;
+  return testing::coloursDrawn(cam, pic);
 }
 
-class ReplayNudges : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = {1280, 720};
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    ImGui::NewFrame();
-  }
-  void TearDown() override {
-    ImGui::EndFrame();
-    ImGui::DestroyContext();
-  }
-};
+using ReplayNudges = testing::ImGuiFrame;
 
 TEST_F(ReplayNudges, ARecordedNudgeIsInTheFramesPictureAndDrawnInItsColour) {
   const Jump j = recordJump(4);
