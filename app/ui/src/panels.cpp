@@ -386,10 +386,8 @@ palette::LegendScope legendScopeOf(const Source& source) {
   }
   if (source.hasContacts()) scope.has |= pal::kWithContacts;
   // A recording (or a live game) whose game corrected a corner: its nudges are drawn, so named.
-  if (const ReplaySource* r = source.replay()) {
-    for (const RecordedItem& i : r->recording().items()) {
-      if (i.nudges > 0) scope.has |= pal::kWithCornerNudge;
-    }
+  if (const ReplaySource* r = source.replay(); r && r->hasNudges()) {
+    scope.has |= pal::kWithCornerNudge;
   }
   return scope;
 }

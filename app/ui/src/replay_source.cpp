@@ -36,6 +36,7 @@ ReplaySource::ReplaySource(Replay replay, std::string name, Origin origin, Sourc
   std::unordered_map<std::string, std::size_t> still;
   std::size_t stillCount = 0;
   for (const RecordedItem& i : items) {
+    hasNudges_ = hasNudges_ || i.nudges > 0;
     if (i.moves > 0 || i.updates > 0) continue;
     ++stillCount;
     if (!i.category.empty()) ++still[i.category];

@@ -72,6 +72,8 @@ class ReplaySource final : public Source {
   }
   [[nodiscard]] std::optional<Ground> ground(ItemId id) const override;
   [[nodiscard]] bool hasContacts() const override { return sawContacts_; }
+  /// The game corrected a corner somewhere in the recording (its nudges are drawn).
+  [[nodiscard]] bool hasNudges() const { return hasNudges_; }
   /// Everything in the world at this frame, padded (a default square for an empty world).
   [[nodiscard]] Rect home() const override;
   [[nodiscard]] double followMinSide() const override;
@@ -142,6 +144,7 @@ class ReplaySource final : public Source {
   std::vector<sim::Solid> solids_;
   std::vector<ImU32> bodyFills_;  // per body of the last picture: its category's colour, or 0
   std::string terrain_;           // the category of the level's geometry (drawn as solids)
+  bool hasNudges_ = false;        // any item's nudges > 0: read once, the items do not change
   std::vector<sim::Body> bodies_;
   std::size_t history_ = 8;  // frames re-traced before the one on screen
   // The frame on screen's contact events (Contacts::update calls up to the selected call), and
