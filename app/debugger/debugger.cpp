@@ -915,6 +915,7 @@ void Debugger::run(Command c) {
       // next what-if opened.
       if (session_->comparing()) {
         view_.overlaid = !view_.overlaid;
+        notice_.clear();  // a hint that compared movers were needed no longer holds
       } else {
         notice_ = "overlaid (V) is for compared movers: compare first (C, or W for a what-if)";
       }

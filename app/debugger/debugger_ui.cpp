@@ -778,9 +778,13 @@ void Debugger::drawWhatIfDialog() {
   // mover's default, said beside it.
   ImGui::InputDouble("substep length", &draftSubstep_, 0.0, 0.0, "%.6g");
   const bool lengthOk = !substep || scene || (draftSubstep_ >= 0.0 && draftSubstep_ <= 1e6);
+  if (scene && substep) {
+    // Greyed out in a scene: its substep length is the scene's own parameter.
+    ImGui::TextDisabled("a scene's substep length is its 'substep' parameter (the panel)");
+  }
   if (!lengthOk) {
     ImGui::TextColored(colour(pal::kBad), "substep length %g refused: 0 to 1e6", draftSubstep_);
-  } else if (draftSubstep_ == 0.0) {
+  } else if (!scene && draftSubstep_ == 0.0) {
     ImGui::TextDisabled("0: half the smallest item");
   }
   ImGui::EndDisabled();

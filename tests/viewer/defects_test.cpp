@@ -163,9 +163,11 @@ TEST_F(DebuggerDriver, OverlaidIsOnlyForComparedMovers) {
   dbg().command(Command::overlay);
   EXPECT_FALSE(dbg().view().overlaid);
   EXPECT_NE(dbg().notice().find("compare first"), std::string::npos) << dbg().notice();
-  open({"--scene", "bullets-wall", "--compare", "discrete,continuous", "--tick", "2"});
+  dbg().compareWith({MoverSpec{.kind = MoverKind::continuous}});
+  ASSERT_TRUE(dbg().session().comparing()) << dbg().message();
   dbg().command(Command::overlay);  // the control: compared, V overlays them
   EXPECT_TRUE(dbg().view().overlaid);
+  EXPECT_TRUE(dbg().notice().empty()) << "a hint that no longer holds: " << dbg().notice();
 }
 
 // The scene picker cut its descriptions, and a recording's call lines were cut at the column's
